@@ -1,0 +1,64 @@
+use super::Origin;
+use glam::DVec3;
+
+/// The projection a camera uses.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CameraKind {
+    Perspective,
+    Orthographic,
+    Fisheye,
+    UltraWideAngle,
+    Omnimax,
+    Panoramic,
+    /// `cylinder 1` to `cylinder 4`.
+    Cylinder(u8),
+    Spherical {
+        h_angle: f64,
+        v_angle: f64,
+    },
+}
+
+/// Focal blur: `aperture`, `blur_samples`, `focal_point`, `confidence`, `variance`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FocalBlur {
+    pub aperture: f64,
+    pub min_samples: u32,
+    pub max_samples: u32,
+    pub focal_point: DVec3,
+    pub confidence: f64,
+    pub variance: f64,
+}
+
+/// A camera with its final vectors: the evaluator has already applied `look_at`, `angle`,
+/// `sky` and transformations in POV-Ray's order, so `right` and `up` may be mirrored or of
+/// any length, and the renderer follows them literally.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Camera {
+    pub kind: CameraKind,
+    pub location: DVec3,
+    pub direction: DVec3,
+    pub right: DVec3,
+    pub up: DVec3,
+    pub sky: DVec3,
+    /// The field of view in degrees, for the projections that take it directly.
+    pub angle: Option<f64>,
+    pub focal_blur: Option<FocalBlur>,
+    pub origin: Origin,
+}
+
+impl Default for Camera {
+    /// POV-Ray's default camera: at the origin, looking along +z, with a 4:3 `right`.
+    fn default() -> Self {
+        Camera {
+            kind: CameraKind::Perspective,
+            location: DVec3::ZERO,
+            direction: DVec3::Z,
+            right: DVec3::new(1.33, 0.0, 0.0),
+            up: DVec3::Y,
+            sky: DVec3::Y,
+            angle: None,
+            focal_blur: None,
+            origin: None,
+        }
+    }
+}

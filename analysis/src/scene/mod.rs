@@ -1,0 +1,43 @@
+//! The scene description: what the evaluator produces and the renderer consumes. It holds
+//! parameters and source locations only; the renderer builds its runtime objects (bounds,
+//! acceleration structures, precomputed transforms) from it. Anything the scene does not
+//! use is absent, so the renderer never pays for it.
+
+mod camera;
+mod colour;
+mod light;
+mod object;
+mod settings;
+mod texture;
+mod transform;
+
+pub use camera::{Camera, CameraKind, FocalBlur};
+pub use colour::Colour;
+pub use light::{AreaLight, Light, LightKind};
+pub use object::{CsgOp, Interior, Object, ObjectFlags, Shape};
+pub use settings::{Fog, GlobalSettings, GroundFog, Photons, Radiosity, SkySphere};
+pub use texture::{
+    BlendMap, Finish, Normal, NormalKind, Pattern, PatternKind, Pigment, Reflection, Texture,
+    Turbulence, Warp, WaveType,
+};
+pub use transform::Transform;
+
+use syntax::Span;
+
+/// Everything a scene file describes, after evaluation.
+#[derive(Debug, Clone)]
+pub struct Scene {
+    pub camera: Camera,
+    pub lights: Vec<Light>,
+    pub objects: Vec<Object>,
+    /// `background { }`; `None` draws transparent black, as POV-Ray does.
+    pub background: Option<Colour>,
+    pub fogs: Vec<Fog>,
+    pub sky_spheres: Vec<SkySphere>,
+    pub settings: GlobalSettings,
+    /// The `#version` in force at the end of parsing, if the scene gave one.
+    pub version: Option<f64>,
+}
+
+/// Where an entity was written, so that the renderer can report problems at the source.
+pub type Origin = Option<Span>;

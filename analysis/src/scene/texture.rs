@@ -1,0 +1,267 @@
+use super::{Colour, Object, Transform};
+use crate::function::Function;
+use glam::DVec3;
+use std::sync::Arc;
+
+/// How a pattern's value is shaped before it indexes a map.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum WaveType {
+    #[default]
+    Ramp,
+    Triangle,
+    Sine,
+    Scallop,
+    Cubic,
+    Poly(f64),
+}
+
+/// `turbulence`, `octaves`, `omega`, `lambda`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Turbulence {
+    pub amount: DVec3,
+    pub octaves: u32,
+    pub omega: f64,
+    pub lambda: f64,
+}
+
+/// A `warp { }` block.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Warp {
+    Turbulence(Turbulence),
+    Repeat {
+        direction: DVec3,
+        offset: DVec3,
+        flip: DVec3,
+    },
+    BlackHole {
+        center: DVec3,
+        radius: f64,
+        strength: f64,
+        falloff: f64,
+        inverse: bool,
+    },
+    Cylindrical {
+        orientation: DVec3,
+        dist_exp: f64,
+    },
+    Spherical {
+        orientation: DVec3,
+        dist_exp: f64,
+    },
+    Toroidal {
+        orientation: DVec3,
+        dist_exp: f64,
+        major_radius: f64,
+    },
+    Planar {
+        orientation: DVec3,
+        distance: f64,
+    },
+    /// A transformation written between warps: it applies in sequence with them.
+    Transform(Transform),
+}
+
+/// The patterns shared by pigments, normals, textures and densities.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PatternKind {
+    Agate {
+        turb: f64,
+    },
+    Boxed,
+    Bozo,
+    Brick {
+        size: DVec3,
+        mortar: f64,
+    },
+    Bumps,
+    Cells,
+    Checker,
+    Crackle {
+        form: DVec3,
+        metric: f64,
+        offset: f64,
+        solid: bool,
+    },
+    Cylindrical,
+    Dents,
+    Facets {
+        coords: f64,
+        size: f64,
+    },
+    Function(Arc<Function>),
+    Gradient(DVec3),
+    Granite,
+    Hexagon,
+    Leopard,
+    Marble,
+    Onion,
+    Planar,
+    Quilted {
+        control0: f64,
+        control1: f64,
+    },
+    Radial,
+    Ripples,
+    Spherical,
+    Spiral1 {
+        arms: f64,
+    },
+    Spiral2 {
+        arms: f64,
+    },
+    Spotted,
+    Square,
+    Triangular,
+    Waves,
+    Wood,
+    Wrinkles,
+    Object(Box<Object>),
+}
+
+/// A pattern with its modifiers, in pattern space; `transform` takes pattern space to the
+/// world (the evaluator composes every later object transformation into it).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pattern {
+    pub kind: PatternKind,
+    pub wave: WaveType,
+    pub frequency: f64,
+    pub phase: f64,
+    pub turbulence: Option<Turbulence>,
+    pub warps: Vec<Warp>,
+    pub transform: Transform,
+    pub noise_generator: u8,
+}
+
+impl Pattern {
+    pub fn new(kind: PatternKind) -> Pattern {
+        Pattern {
+            kind,
+            wave: WaveType::Ramp,
+            frequency: 1.0,
+            phase: 0.0,
+            turbulence: None,
+            warps: Vec::new(),
+            transform: Transform::IDENTITY,
+            noise_generator: 2,
+        }
+    }
+}
+
+/// Values from 0 to 1 mapped to entries, blended between neighbours. Block patterns
+/// (checker, hexagon, brick, square, triangular) index the entries directly instead.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BlendMap<T> {
+    pub entries: Vec<(f64, T)>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum Pigment {
+    Solid(Colour),
+    Pattern {
+        pattern: Pattern,
+        map: BlendMap<Pigment>,
+    },
+    /// `average` of weighted pigments.
+    Average {
+        transform: Transform,
+        entries: Vec<(f64, Pigment)>,
+    },
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum NormalKind {
+    /// A pattern used as a height field, scaled by `bump_size`.
+    Pattern { pattern: Pattern, bump_size: f64 },
+    /// A `normal_map`.
+    Map {
+        pattern: Pattern,
+        map: BlendMap<Normal>,
+    },
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Normal {
+    pub kind: NormalKind,
+    /// The sample spacing for patterns that are not bumps by nature.
+    pub accuracy: f64,
+}
+
+/// The `reflection { }` block, or the plain `reflection` colour.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Reflection {
+    pub min: Colour,
+    pub max: Colour,
+    pub fresnel: bool,
+    pub falloff: f64,
+    pub exponent: f64,
+    pub metallic: f64,
+}
+
+/// Surface response to light, with POV-Ray's defaults.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Finish {
+    pub ambient: DVec3,
+    pub emission: DVec3,
+    pub diffuse: f64,
+    pub diffuse_back: f64,
+    pub diffuse_albedo: bool,
+    pub brilliance: f64,
+    pub crand: f64,
+    pub phong: f64,
+    pub phong_size: f64,
+    pub specular: f64,
+    pub roughness: f64,
+    pub metallic: f64,
+    pub reflection: Option<Reflection>,
+    pub irid: Option<(f64, f64, f64)>,
+    pub conserve_energy: bool,
+}
+
+impl Default for Finish {
+    fn default() -> Self {
+        Finish {
+            ambient: DVec3::splat(0.1),
+            emission: DVec3::ZERO,
+            diffuse: 0.6,
+            diffuse_back: 0.0,
+            diffuse_albedo: false,
+            brilliance: 1.0,
+            crand: 0.0,
+            phong: 0.0,
+            phong_size: 40.0,
+            specular: 0.0,
+            roughness: 0.05,
+            metallic: 0.0,
+            reflection: None,
+            irid: None,
+            conserve_energy: false,
+        }
+    }
+}
+
+/// A texture: plain, patterned (a `texture_map` or block pattern of textures), or layered.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Texture {
+    Plain {
+        pigment: Pigment,
+        normal: Option<Normal>,
+        finish: Arc<Finish>,
+    },
+    Pattern {
+        pattern: Pattern,
+        map: BlendMap<Texture>,
+    },
+    /// Layers from the bottom up; each upper layer shows through its filter/transmit.
+    Layered(Vec<Texture>),
+}
+
+impl Default for Texture {
+    /// POV-Ray's default texture: black pigment, default finish, no normal.
+    fn default() -> Self {
+        Texture::Plain {
+            pigment: Pigment::Solid(Colour::BLACK),
+            normal: None,
+            finish: Arc::new(Finish::default()),
+        }
+    }
+}
