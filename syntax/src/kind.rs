@@ -17,8 +17,6 @@ macro_rules! define_kinds {
             $($(#[$tok_meta])* $tok,)*
             $($kw,)*
             $($node,)*
-            #[doc(hidden)]
-            __LAST,
         }
 
         /// The reserved words with their kinds, sorted by text.
