@@ -171,7 +171,7 @@ pub enum Pigment {
 #[derive(Debug, Clone, PartialEq)]
 pub enum NormalKind {
     /// A pattern used as a height field, scaled by `bump_size`.
-    Pattern { pattern: Pattern, bump_size: f64 },
+    Pattern { pattern: Box<Pattern>, bump_size: f64 },
     /// A `normal_map`.
     Map {
         pattern: Pattern,
