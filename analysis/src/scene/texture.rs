@@ -158,7 +158,7 @@ pub struct BlendMap<T> {
 pub enum Pigment {
     Solid(Colour),
     Pattern {
-        pattern: Pattern,
+        pattern: Box<Pattern>,
         map: BlendMap<Pigment>,
     },
     /// `average` of weighted pigments.
@@ -174,7 +174,7 @@ pub enum NormalKind {
     Pattern { pattern: Box<Pattern>, bump_size: f64 },
     /// A `normal_map`.
     Map {
-        pattern: Pattern,
+        pattern: Box<Pattern>,
         map: BlendMap<Normal>,
     },
 }
@@ -248,7 +248,7 @@ pub enum Texture {
         finish: Arc<Finish>,
     },
     Pattern {
-        pattern: Pattern,
+        pattern: Box<Pattern>,
         map: BlendMap<Texture>,
     },
     /// Layers from the bottom up; each upper layer shows through its filter/transmit.
