@@ -161,17 +161,15 @@ pub enum Pigment {
         pattern: Box<Pattern>,
         map: BlendMap<Pigment>,
     },
-    /// `average` of weighted pigments.
-    Average {
-        transform: Transform,
-        entries: Vec<(f64, Pigment)>,
-    },
 }
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum NormalKind {
     /// A pattern used as a height field, scaled by `bump_size`.
-    Pattern { pattern: Box<Pattern>, bump_size: f64 },
+    Pattern {
+        pattern: Box<Pattern>,
+        bump_size: f64,
+    },
     /// A `normal_map`.
     Map {
         pattern: Box<Pattern>,
