@@ -4,3 +4,4 @@
 
 pub mod function;
 pub mod scene;
+pub mod stdinc;

@@ -1,0 +1,69 @@
+//! Povrayst's own versions of POV-Ray's standard include files (`colors.inc`,
+//! `textures.inc`, ...), embedded in the binary so that `#include "colors.inc"` works with
+//! no file system, as in the Typst plugin. The files live in `analysis/stdinc/`; its
+//! README says how each was written and where its facts come from.
+
+/// Every embedded include file, by the name a scene uses, sorted by name.
+const FILES: &[(&str, &str)] = &[
+    ("colors.inc", include_str!("../stdinc/colors.inc")),
+    ("consts.inc", include_str!("../stdinc/consts.inc")),
+];
+
+/// The text of the standard include file a scene names, such as `"colors.inc"`.
+pub fn get(name: &str) -> Option<&'static str> {
+    FILES
+        .binary_search_by(|(file, _)| (*file).cmp(name))
+        .ok()
+        .map(|index| FILES[index].1)
+}
+
+/// The names of every embedded include file, in sorted order.
+pub fn names() -> impl Iterator<Item = &'static str> {
+    FILES.iter().map(|(name, _)| *name)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn files_are_sorted_and_found_by_name() {
+        let listed: Vec<_> = names().collect();
+        let mut sorted = listed.clone();
+        sorted.sort_unstable();
+        sorted.dedup();
+        assert_eq!(listed, sorted);
+        for name in names() {
+            assert!(get(name).is_some_and(|text| !text.is_empty()), "{name}");
+        }
+        assert_eq!(get("no-such-file.inc"), None);
+    }
+
+    #[test]
+    fn every_file_lexes_without_errors() {
+        for name in names() {
+            let lexed = syntax::lexer::lex(get(name).unwrap());
+            assert!(lexed.errors.is_empty(), "{name}: {:?}", lexed.errors);
+        }
+    }
+
+    /// Every `#include "..."` inside a standard include names another embedded file, so a
+    /// scene never needs anything from disk to use them.
+    #[test]
+    fn includes_between_files_resolve() {
+        for name in names() {
+            let text = get(name).unwrap();
+            for (index, _) in text.match_indices("#include") {
+                let rest = text[index + "#include".len()..].trim_start();
+                let included = rest
+                    .strip_prefix('"')
+                    .and_then(|quoted| quoted.split('"').next())
+                    .unwrap_or_else(|| panic!("{name}: #include without a literal file name"));
+                assert!(
+                    get(included).is_some(),
+                    "{name} includes missing {included}"
+                );
+            }
+        }
+    }
+}
