@@ -1,2 +1,25 @@
 //! The Povrayst ray tracer: builds runtime shapes, materials, lights and acceleration
 //! structures from an [`analysis::scene::Scene`] and traces them into an image.
+
+mod bounds;
+mod build;
+mod bvh;
+mod camera;
+mod colour;
+mod image;
+mod light;
+mod material;
+mod object;
+mod options;
+mod png_output;
+mod ray;
+mod render;
+mod sampling;
+mod shapes;
+mod tracer;
+
+pub use build::BuildError;
+pub use image::Image;
+pub use options::{Extent, Gamma, RenderOptions};
+pub use png_output::encode_png;
+pub use render::render;

@@ -1,0 +1,154 @@
+//! Axis-aligned bounding boxes in world space, with the slab test rays use to skip objects.
+
+use crate::ray::Ray;
+use glam::{DAffine3, DVec3};
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Aabb {
+    pub min: DVec3,
+    pub max: DVec3,
+}
+
+impl Aabb {
+    pub const EMPTY: Aabb = Aabb {
+        min: DVec3::splat(f64::INFINITY),
+        max: DVec3::splat(f64::NEG_INFINITY),
+    };
+
+    pub const INFINITE: Aabb = Aabb {
+        min: DVec3::splat(f64::NEG_INFINITY),
+        max: DVec3::splat(f64::INFINITY),
+    };
+
+    pub fn new(a: DVec3, b: DVec3) -> Aabb {
+        Aabb {
+            min: a.min(b),
+            max: a.max(b),
+        }
+    }
+
+    pub fn is_finite(&self) -> bool {
+        self.min.is_finite() && self.max.is_finite()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.min.x > self.max.x || self.min.y > self.max.y || self.min.z > self.max.z
+    }
+
+    pub fn union(&self, other: &Aabb) -> Aabb {
+        Aabb {
+            min: self.min.min(other.min),
+            max: self.max.max(other.max),
+        }
+    }
+
+    pub fn intersection(&self, other: &Aabb) -> Aabb {
+        Aabb {
+            min: self.min.max(other.min),
+            max: self.max.min(other.max),
+        }
+    }
+
+    pub fn centre(&self) -> DVec3 {
+        (self.min + self.max) * 0.5
+    }
+
+    /// The box around this box after an affine map. Infinite extents stay infinite along
+    /// every axis they can reach.
+    pub fn transformed(&self, m: &DAffine3) -> Aabb {
+        if self.is_empty() {
+            return *self;
+        }
+        if !self.is_finite() {
+            return self.transformed_unbounded(m);
+        }
+        let mut out = Aabb::EMPTY;
+        for i in 0..8 {
+            let corner = DVec3::new(
+                if i & 1 == 0 { self.min.x } else { self.max.x },
+                if i & 2 == 0 { self.min.y } else { self.max.y },
+                if i & 4 == 0 { self.min.z } else { self.max.z },
+            );
+            let p = m.transform_point3(corner);
+            out.min = out.min.min(p);
+            out.max = out.max.max(p);
+        }
+        out
+    }
+
+    fn transformed_unbounded(&self, m: &DAffine3) -> Aabb {
+        // Centre plus half-extent per output axis; an infinite half-extent spreads to
+        // every output axis its input axis feeds.
+        let centre = self.min.max(DVec3::splat(-1e300)).min(DVec3::splat(1e300));
+        let centre = (centre + self.max.max(DVec3::splat(-1e300)).min(DVec3::splat(1e300))) * 0.5;
+        let half = (self.max - self.min) * 0.5;
+        let c = m.transform_point3(centre);
+        let a = m.matrix3;
+        let mut extent = DVec3::ZERO;
+        for row in 0..3 {
+            let mut e = 0.0;
+            for col in 0..3 {
+                let w = a.col(col)[row].abs();
+                if w != 0.0 {
+                    e += w * half[col];
+                }
+            }
+            extent[row] = e;
+        }
+        Aabb {
+            min: c - extent,
+            max: c + extent,
+        }
+    }
+
+    /// The parameter interval where the ray is inside the box, clipped to `[tmin, tmax]`;
+    /// `None` when it misses. `inv_dir` is the componentwise reciprocal of the direction.
+    pub fn clip(&self, ray: &Ray, inv_dir: DVec3, tmin: f64, tmax: f64) -> Option<(f64, f64)> {
+        let t1 = (self.min - ray.origin) * inv_dir;
+        let t2 = (self.max - ray.origin) * inv_dir;
+        // NaN (0 * inf on a slab boundary) must not reject a hit: `min`/`max` drop it.
+        let near = t1.min(t2);
+        let far = t1.max(t2);
+        let lo = tmin.max(near.x).max(near.y).max(near.z);
+        let hi = tmax.min(far.x).min(far.y).min(far.z);
+        (lo <= hi).then_some((lo, hi))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slab_test() {
+        let b = Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0));
+        let ray = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
+        let (lo, hi) = b
+            .clip(&ray, ray.direction.recip(), 0.0, f64::INFINITY)
+            .unwrap();
+        assert_eq!((lo, hi), (4.0, 6.0));
+        let miss = Ray::new(DVec3::new(2.0, 0.0, -5.0), DVec3::Z);
+        assert!(
+            b.clip(&miss, miss.direction.recip(), 0.0, f64::INFINITY)
+                .is_none()
+        );
+        // A ray lying in a slab's boundary plane still hits.
+        let grazing = Ray::new(DVec3::new(1.0, 0.0, -5.0), DVec3::Z);
+        assert!(
+            b.clip(&grazing, grazing.direction.recip(), 0.0, f64::INFINITY)
+                .is_some()
+        );
+    }
+
+    #[test]
+    fn infinite_boxes_transform() {
+        let half_space = Aabb {
+            min: DVec3::new(f64::NEG_INFINITY, f64::NEG_INFINITY, -1.0),
+            max: DVec3::new(f64::INFINITY, f64::INFINITY, 1.0),
+        };
+        let moved = half_space.transformed(&DAffine3::from_translation(DVec3::Z));
+        assert_eq!(moved.min.z, 0.0);
+        assert_eq!(moved.max.z, 2.0);
+        assert!(moved.min.x.is_infinite());
+    }
+}

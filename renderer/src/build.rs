@@ -1,0 +1,310 @@
+//! Builds the runtime world from a scene description: shapes in their canonical frames with
+//! the object's transform folded in, materials shared between objects that share a texture,
+//! CSG trees with their bounds, lights, and the bounding volume hierarchy.
+
+use crate::bounds::Aabb;
+use crate::bvh::Bvh;
+use crate::colour::Sample;
+use crate::light::Light;
+use crate::material::{self, Material};
+use crate::object::{Csg, Leaf, Object, Visibility};
+use crate::shapes::{Cone, Cuboid, Cylinder, Plane, Shape, Sphere};
+use crate::tracer::{Quality, World};
+use analysis::scene::{self, CsgOp, Origin, Scene};
+use glam::{DAffine3, DMat3, DVec3};
+use std::collections::HashMap;
+use std::sync::Arc;
+
+/// A scene feature the renderer cannot draw, with where the scene asked for it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BuildError {
+    pub message: String,
+    pub origin: Origin,
+}
+
+/// What the world depends on besides the scene.
+#[derive(Debug, Clone, Copy)]
+pub struct BuildSettings {
+    pub quality: u8,
+    /// With alpha output the background is transparent black, as in POV-Ray 3.7.
+    pub output_alpha: bool,
+}
+
+pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, BuildError> {
+    let mut builder = Builder {
+        materials: HashMap::new(),
+        default_material: None,
+        lights: Vec::new(),
+    };
+    for light in &scene.lights {
+        builder.add_light(light)?;
+    }
+    let mut objects = Vec::with_capacity(scene.objects.len());
+    for object in &scene.objects {
+        if let Some(built) = builder.object(object, None, Visibility::default())? {
+            objects.push(built);
+        }
+    }
+    let bvh = Bvh::build(objects);
+    let background = match (settings.output_alpha, &scene.background) {
+        (true, _) => Sample::new(DVec3::ZERO, 1.0),
+        (false, Some(c)) => Sample::new(c.rgb, 0.0),
+        (false, None) => Sample::new(DVec3::ZERO, 0.0),
+    };
+    let scale = scene_scale(scene, &bvh);
+    Ok(World {
+        bvh,
+        lights: builder.lights,
+        background,
+        ambient_light: scene.settings.ambient_light.rgb,
+        quality: Quality::from_level(settings.quality),
+        scale,
+    })
+}
+
+/// A length typical of the scene: the camera's distance from the origin or the extent of
+/// the bounded objects, whichever is larger.
+fn scene_scale(scene: &Scene, bvh: &Bvh) -> f64 {
+    let bounds = bvh.bounds();
+    let extent = if bounds.is_finite() && !bounds.is_empty() {
+        bounds.min.abs().max(bounds.max.abs()).max_element()
+    } else {
+        0.0
+    };
+    extent.max(scene.camera.location.abs().max_element())
+}
+
+struct Builder {
+    /// Materials by the address of the scene texture they came from, so that objects
+    /// sharing a texture share one material.
+    materials: HashMap<*const scene::Texture, Arc<Material>>,
+    default_material: Option<Arc<Material>>,
+    lights: Vec<Light>,
+}
+
+impl Builder {
+    fn add_light(&mut self, light: &scene::Light) -> Result<(), BuildError> {
+        let built = Light::from_scene(light).map_err(|message| BuildError {
+            message,
+            origin: light.origin.clone(),
+        })?;
+        self.lights.push(built);
+        Ok(())
+    }
+
+    fn material(
+        &mut self,
+        texture: Option<&Arc<scene::Texture>>,
+        origin: &Origin,
+    ) -> Result<Arc<Material>, BuildError> {
+        let fail = |message| BuildError {
+            message,
+            origin: origin.clone(),
+        };
+        let Some(texture) = texture else {
+            if let Some(m) = &self.default_material {
+                return Ok(m.clone());
+            }
+            let m = Arc::new(Material::from_scene(&scene::Texture::default()).map_err(fail)?);
+            self.default_material = Some(m.clone());
+            return Ok(m);
+        };
+        let key = Arc::as_ptr(texture);
+        if let Some(m) = self.materials.get(&key) {
+            return Ok(m.clone());
+        }
+        let m = Material::from_scene(texture).map_err(fail)?;
+        material::check_finish(&m.finish).map_err(fail)?;
+        let colour = m.pigment.colour_at();
+        if colour.filter != 0.0 || colour.transmit != 0.0 {
+            return Err(fail(
+                "not supported yet: transparent pigments (filter/transmit)".into(),
+            ));
+        }
+        let m = Arc::new(m);
+        self.materials.insert(key, m.clone());
+        Ok(m)
+    }
+
+    /// The runtime object for a scene object, or `None` when it has no surface at all
+    /// (a sphere of radius 0, an empty CSG).
+    fn object(
+        &mut self,
+        object: &scene::Object,
+        inherited: Option<&Arc<scene::Texture>>,
+        inherited_visibility: Visibility,
+    ) -> Result<Option<Object>, BuildError> {
+        let fail = |message: String| BuildError {
+            message,
+            origin: object.origin.clone(),
+        };
+        if !object.clipped_by.is_empty() {
+            return Err(fail("not supported yet: clipped_by".into()));
+        }
+        let flags = object.flags;
+        let visibility = Visibility {
+            no_image: flags.no_image || inherited_visibility.no_image,
+            no_shadow: flags.no_shadow || inherited_visibility.no_shadow,
+        };
+        let texture = object.texture.as_ref().or(inherited);
+        let (shape, frame) = match &object.shape {
+            scene::Shape::Csg {
+                op,
+                children,
+                lights,
+            } => {
+                for light in lights {
+                    self.add_light(light)?;
+                }
+                let mut built = Vec::with_capacity(children.len());
+                for child in children {
+                    if let Some(c) = self.object(child, texture, visibility)? {
+                        built.push(c);
+                    } else if *op == CsgOp::Intersection {
+                        // An empty child leaves an empty intersection.
+                        return Ok(None);
+                    } else if *op == CsgOp::Difference && built.is_empty() {
+                        return Ok(None);
+                    }
+                }
+                if built.is_empty() {
+                    return Ok(None);
+                }
+                let bounds = csg_bounds(*op, &built);
+                return Ok(Some(Object::Csg(Csg {
+                    op: *op,
+                    children: built,
+                    bounds,
+                    inverse: flags.inverse,
+                })));
+            }
+            scene::Shape::Sphere { center, radius } => {
+                let r = radius.abs();
+                if r == 0.0 {
+                    return Ok(None);
+                }
+                (
+                    Shape::Sphere(Sphere),
+                    DAffine3::from_scale_rotation_translation(
+                        DVec3::splat(r),
+                        glam::DQuat::IDENTITY,
+                        *center,
+                    ),
+                )
+            }
+            scene::Shape::Box { corner1, corner2 } => (
+                Shape::Cuboid(Cuboid::new(*corner1, *corner2)),
+                DAffine3::IDENTITY,
+            ),
+            scene::Shape::Cylinder {
+                base,
+                cap,
+                radius,
+                open,
+            } => {
+                let frame = axis_frame(*base, *cap, radius.abs())
+                    .ok_or_else(|| fail("degenerate cylinder: base and cap coincide".into()))?;
+                (Shape::Cylinder(Cylinder { open: *open }), frame)
+            }
+            scene::Shape::Cone {
+                base,
+                base_radius,
+                cap,
+                cap_radius,
+                open,
+            } => {
+                let frame = axis_frame(*base, *cap, 1.0)
+                    .ok_or_else(|| fail("degenerate cone: base and cap coincide".into()))?;
+                (
+                    Shape::Cone(Cone {
+                        base_radius: base_radius.abs(),
+                        cap_radius: cap_radius.abs(),
+                        open: *open,
+                    }),
+                    frame,
+                )
+            }
+            scene::Shape::Plane { normal, distance } => {
+                let n = normal.normalize_or_zero();
+                if n == DVec3::ZERO {
+                    return Err(fail("degenerate plane: the normal is zero".into()));
+                }
+                (
+                    Shape::Plane(Plane {
+                        normal: n,
+                        distance: *distance,
+                    }),
+                    DAffine3::IDENTITY,
+                )
+            }
+            other => {
+                // The variant's name, as the scene's Debug form spells it.
+                let name = format!("{other:?}");
+                let name = name.split([' ', '{', '(']).next().unwrap_or_default();
+                return Err(fail(format!(
+                    "not supported yet: {}",
+                    name.to_ascii_lowercase()
+                )));
+            }
+        };
+        let material = self.material(texture, &object.origin)?;
+        let to_world = object.transform.matrix * frame;
+        if !to_world.is_finite() || to_world.matrix3.determinant() == 0.0 {
+            return Err(fail("the object's transformation is singular".into()));
+        }
+        Ok(Some(Object::Leaf(Leaf::new(
+            shape,
+            to_world,
+            flags.inverse,
+            material,
+            visibility,
+        ))))
+    }
+}
+
+/// The frame taking the z axis from 0 to 1 onto `base`..`cap`, with the x and y axes of
+/// length `radius` across it.
+fn axis_frame(base: DVec3, cap: DVec3, radius: f64) -> Option<DAffine3> {
+    let axis = cap - base;
+    let length = axis.length();
+    if !(length > 0.0 && length.is_finite() && radius > 0.0) {
+        return None;
+    }
+    let w = axis / length;
+    let (u, v) = w.any_orthonormal_pair();
+    Some(DAffine3::from_mat3_translation(
+        DMat3::from_cols(u * radius, v * radius, axis),
+        base,
+    ))
+}
+
+/// Bounds of a CSG's surface: an inverted child bounds nothing, so it constrains an
+/// intersection no further.
+fn csg_bounds(op: CsgOp, children: &[Object]) -> Aabb {
+    let region = |o: &Object| {
+        if o.is_inverted() {
+            Aabb::INFINITE
+        } else {
+            o.bounds()
+        }
+    };
+    match op {
+        CsgOp::Union | CsgOp::Merge => children
+            .iter()
+            .fold(Aabb::EMPTY, |b, o| b.union(&o.bounds())),
+        CsgOp::Intersection => {
+            let surfaces = children
+                .iter()
+                .fold(Aabb::EMPTY, |b, o| b.union(&o.bounds()));
+            children
+                .iter()
+                .fold(surfaces, |b, o| b.intersection(&region(o)))
+        }
+        CsgOp::Difference => {
+            let surfaces = children
+                .iter()
+                .fold(Aabb::EMPTY, |b, o| b.union(&o.bounds()));
+            surfaces.intersection(&region(&children[0]))
+        }
+    }
+}

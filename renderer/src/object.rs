@@ -1,0 +1,305 @@
+//! Runtime objects: a shape bound to its placement and material (a leaf), or a CSG node
+//! over other objects. CSG follows POV-Ray's definition: a union keeps every crossing of its
+//! children, a merge the crossings outside the other children, an intersection those inside
+//! all the others, and a difference is the intersection of the first child with the inverse
+//! of the rest.
+
+use crate::bounds::Aabb;
+use crate::material::Material;
+use crate::ray::{Ray, RayKind};
+use crate::shapes::{Roots, Shape};
+use analysis::scene::CsgOp;
+use glam::{DAffine3, DMat3, DVec3};
+use std::sync::Arc;
+
+/// Which kinds of rays see an object.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Visibility {
+    pub no_image: bool,
+    pub no_shadow: bool,
+}
+
+impl Visibility {
+    pub fn sees(&self, kind: RayKind) -> bool {
+        match kind {
+            RayKind::Primary => !self.no_image,
+            RayKind::Shadow => !self.no_shadow,
+        }
+    }
+}
+
+/// A shape placed in the world with its material.
+#[derive(Debug, Clone)]
+pub struct Leaf {
+    pub shape: Shape,
+    /// Canonical frame to world; `None` for the identity, the common case of planes.
+    pub to_world: Option<DAffine3>,
+    pub to_local: Option<DAffine3>,
+    /// Transposed inverse linear part, for normals.
+    pub normal_matrix: DMat3,
+    pub inverse: bool,
+    pub material: Arc<Material>,
+    pub visibility: Visibility,
+    pub bounds: Aabb,
+}
+
+/// A crossing of a ray with a leaf.
+#[derive(Debug, Clone, Copy)]
+pub struct Hit<'a> {
+    pub t: f64,
+    pub leaf: &'a Leaf,
+    pub part: u8,
+}
+
+impl Leaf {
+    pub fn new(
+        shape: Shape,
+        to_world: DAffine3,
+        inverse: bool,
+        material: Arc<Material>,
+        visibility: Visibility,
+    ) -> Leaf {
+        let identity = to_world == DAffine3::IDENTITY;
+        let to_local = to_world.inverse();
+        let bounds = shape.bounds().transformed(&to_world);
+        Leaf {
+            shape,
+            to_world: (!identity).then_some(to_world),
+            to_local: (!identity).then_some(to_local),
+            normal_matrix: to_local.matrix3.transpose(),
+            inverse,
+            material,
+            visibility,
+            bounds,
+        }
+    }
+
+    fn local_ray(&self, ray: &Ray) -> Ray {
+        match &self.to_local {
+            Some(m) => Ray::new(
+                m.transform_point3(ray.origin),
+                m.transform_vector3(ray.direction),
+            ),
+            None => *ray,
+        }
+    }
+
+    fn local_point(&self, p: DVec3) -> DVec3 {
+        match &self.to_local {
+            Some(m) => m.transform_point3(p),
+            None => p,
+        }
+    }
+
+    pub fn inside(&self, p: DVec3) -> bool {
+        self.shape.inside(self.local_point(p)) != self.inverse
+    }
+
+    /// The unit outward normal in the world at a point of this leaf's surface.
+    pub fn normal(&self, p: DVec3, part: u8) -> DVec3 {
+        let n = self.shape.normal(self.local_point(p), part);
+        let n = if self.to_world.is_some() {
+            self.normal_matrix * n
+        } else {
+            n
+        };
+        let n = n.normalize_or_zero();
+        if n == DVec3::ZERO {
+            // A degenerate spot (a cone's apex): any direction facing the ray will do
+            // once the shader turns it; never NaN.
+            DVec3::Y
+        } else if self.inverse {
+            -n
+        } else {
+            n
+        }
+    }
+
+    fn roots(&self, ray: &Ray) -> Roots {
+        let mut roots = Roots::new();
+        self.shape.intersect(&self.local_ray(ray), &mut roots);
+        roots
+    }
+}
+
+/// A node of the object tree. Leaves are kept inline although they are larger than CSG
+/// nodes: most objects are leaves, and a box around each would cost a pointer chase per test.
+#[derive(Debug, Clone)]
+#[allow(clippy::large_enum_variant)]
+pub enum Object {
+    Leaf(Leaf),
+    Csg(Csg),
+}
+
+#[derive(Debug, Clone)]
+pub struct Csg {
+    pub op: CsgOp,
+    pub children: Vec<Object>,
+    pub bounds: Aabb,
+    /// `inverse`: inside and outside swap; the surface stays.
+    pub inverse: bool,
+}
+
+/// A ray segment: the ray, its kind, and the open interval of parameters searched.
+#[derive(Debug, Clone, Copy)]
+pub struct Query {
+    pub ray: Ray,
+    pub inv_dir: DVec3,
+    pub kind: RayKind,
+    pub tmin: f64,
+    pub tmax: f64,
+}
+
+impl Query {
+    pub fn new(ray: Ray, kind: RayKind, tmin: f64, tmax: f64) -> Query {
+        Query {
+            ray,
+            inv_dir: ray.direction.recip(),
+            kind,
+            tmin,
+            tmax,
+        }
+    }
+}
+
+impl Object {
+    pub fn bounds(&self) -> Aabb {
+        match self {
+            Object::Leaf(l) => l.bounds,
+            Object::Csg(c) => c.bounds,
+        }
+    }
+
+    pub fn is_inverted(&self) -> bool {
+        match self {
+            Object::Leaf(l) => l.inverse,
+            Object::Csg(c) => c.inverse,
+        }
+    }
+
+    pub fn inside(&self, p: DVec3) -> bool {
+        match self {
+            Object::Leaf(l) => l.inside(p),
+            Object::Csg(c) => {
+                let inside = match c.op {
+                    CsgOp::Union | CsgOp::Merge => c.children.iter().any(|o| o.inside(p)),
+                    CsgOp::Intersection => c.children.iter().all(|o| o.inside(p)),
+                    CsgOp::Difference => c
+                        .children
+                        .iter()
+                        .enumerate()
+                        .all(|(j, o)| o.inside(p) == (j == 0)),
+                };
+                inside != c.inverse
+            }
+        }
+    }
+
+    /// The nearest crossing inside the query's interval.
+    pub fn nearest<'a>(&'a self, q: &Query, scratch: &mut Vec<Hit<'a>>) -> Option<Hit<'a>> {
+        if !self.bounds().is_finite() {
+            // Unbounded objects skip the box test, which would only say yes.
+        } else {
+            q_clip(self.bounds(), q)?;
+        }
+        match self {
+            Object::Leaf(leaf) => {
+                if !leaf.visibility.sees(q.kind) {
+                    return None;
+                }
+                let roots = leaf.roots(&q.ray);
+                let mut best: Option<Hit<'a>> = None;
+                for r in roots.as_slice() {
+                    if r.t > q.tmin && r.t < q.tmax && best.is_none_or(|b| r.t < b.t) {
+                        best = Some(Hit {
+                            t: r.t,
+                            leaf,
+                            part: r.part,
+                        });
+                    }
+                }
+                best
+            }
+            Object::Csg(csg) if csg.op == CsgOp::Union => {
+                let mut q = *q;
+                let mut best = None;
+                for child in &csg.children {
+                    if let Some(hit) = child.nearest(&q, scratch) {
+                        q.tmax = hit.t;
+                        best = Some(hit);
+                    }
+                }
+                best
+            }
+            Object::Csg(_) => {
+                let start = scratch.len();
+                self.all_hits(q, scratch);
+                let best = scratch[start..]
+                    .iter()
+                    .copied()
+                    .min_by(|a, b| a.t.total_cmp(&b.t));
+                scratch.truncate(start);
+                best
+            }
+        }
+    }
+
+    /// Appends every crossing inside the query's interval that lies on this object's
+    /// surface, in no particular order.
+    pub fn all_hits<'a>(&'a self, q: &Query, out: &mut Vec<Hit<'a>>) {
+        if self.bounds().is_finite() && q_clip(self.bounds(), q).is_none() {
+            return;
+        }
+        match self {
+            Object::Leaf(leaf) => {
+                if !leaf.visibility.sees(q.kind) {
+                    return;
+                }
+                for r in leaf.roots(&q.ray).as_slice() {
+                    if r.t > q.tmin && r.t < q.tmax {
+                        out.push(Hit {
+                            t: r.t,
+                            leaf,
+                            part: r.part,
+                        });
+                    }
+                }
+            }
+            Object::Csg(csg) => {
+                for (i, child) in csg.children.iter().enumerate() {
+                    let start = out.len();
+                    child.all_hits(q, out);
+                    if csg.op == CsgOp::Union {
+                        continue;
+                    }
+                    let mut kept = start;
+                    for k in start..out.len() {
+                        let hit = out[k];
+                        if csg.keeps(i, q.ray.at(hit.t)) {
+                            out[kept] = hit;
+                            kept += 1;
+                        }
+                    }
+                    out.truncate(kept);
+                }
+            }
+        }
+    }
+}
+
+impl Csg {
+    /// Whether a crossing of child `from` at `p` is on this CSG's surface.
+    fn keeps(&self, from: usize, p: DVec3) -> bool {
+        let others = self.children.iter().enumerate().filter(|(j, _)| *j != from);
+        match self.op {
+            CsgOp::Union => true,
+            CsgOp::Merge => others.into_iter().all(|(_, o)| !o.inside(p)),
+            CsgOp::Intersection => others.into_iter().all(|(_, o)| o.inside(p)),
+            CsgOp::Difference => others.into_iter().all(|(j, o)| o.inside(p) == (j == 0)),
+        }
+    }
+}
+
+fn q_clip(bounds: Aabb, q: &Query) -> Option<(f64, f64)> {
+    bounds.clip(&q.ray, q.inv_dir, q.tmin, q.tmax)
+}

@@ -1,0 +1,30 @@
+//! Rays, and what a ray is traced for, since objects may hide from some kinds
+//! (`no_image`, `no_shadow`).
+
+use glam::DVec3;
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ray {
+    pub origin: DVec3,
+    /// Not necessarily of unit length: object-space rays keep the world parameter `t`.
+    pub direction: DVec3,
+}
+
+impl Ray {
+    pub fn new(origin: DVec3, direction: DVec3) -> Ray {
+        Ray { origin, direction }
+    }
+
+    pub fn at(&self, t: f64) -> DVec3 {
+        self.origin + self.direction * t
+    }
+}
+
+/// Why a ray is traced.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RayKind {
+    /// From the camera.
+    Primary,
+    /// Towards a light, to find what blocks it.
+    Shadow,
+}

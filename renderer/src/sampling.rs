@@ -1,0 +1,232 @@
+//! Antialiasing: how many camera rays each pixel gets and where. Method 2 is POV-Ray's
+//! adaptive recursive supersampling: every pixel starts from the samples at its four
+//! corners (shared with its neighbours), and a square whose corners differ by the threshold
+//! or more is split into four, up to `depth - 1` times, jittered. Method 1 traces pixel
+//! centres and supersamples a `depth` × `depth` grid wherever a pixel differs from a
+//! neighbour. Colours are compared after the antialiasing gamma curve, as POV-Ray does.
+
+use crate::camera::Camera;
+use crate::colour::{Curve, Sample};
+use crate::tracer::{Tracer, World};
+
+/// Everything needed to turn image positions into samples.
+pub struct Sampler<'a> {
+    pub world: &'a World,
+    pub camera: &'a Camera,
+    pub width: f64,
+    pub height: f64,
+    pub threshold: f64,
+    pub depth: u32,
+    pub jitter: f64,
+    /// Working colour to the values compared against the threshold.
+    pub compare: CompareCurve,
+}
+
+/// How sample colours are prepared for the threshold test: from working space to linear
+/// light (`assumed_gamma`), then through the antialiasing gamma.
+#[derive(Debug, Clone, Copy)]
+pub struct CompareCurve {
+    pub working: Curve,
+    pub aa: Curve,
+}
+
+impl CompareCurve {
+    fn apply(&self, s: Sample) -> Sample {
+        let linear = Sample::new(
+            glam::DVec3::new(
+                self.working.decode(s.colour.x),
+                self.working.decode(s.colour.y),
+                self.working.decode(s.colour.z),
+            ),
+            s.transmit,
+        );
+        linear.encoded(&self.aa)
+    }
+}
+
+impl Sampler<'_> {
+    /// One camera ray through image position `(x, y)` (pixel units from the top-left).
+    pub fn trace(&self, tracer: &mut Tracer<'_>, x: f64, y: f64) -> Sample {
+        match self.camera.ray(x, y, self.width, self.height) {
+            Some(ray) => tracer.trace_primary(&ray),
+            // POV-Ray leaves such pixels fully transparent.
+            None => Sample::new(glam::DVec3::ZERO, 1.0),
+        }
+    }
+
+    fn differ(&self, a: Sample, b: Sample) -> bool {
+        self.compare.apply(a).distance(self.compare.apply(b)) >= self.threshold
+    }
+
+    /// A pseudo-random offset in [-0.5, 0.5)² for a sample position, the same whatever
+    /// thread or order traces it.
+    fn jitter_at(&self, x: f64, y: f64) -> (f64, f64) {
+        let qx = (x * 65536.0).round() as i64 as u64;
+        let qy = (y * 65536.0).round() as i64 as u64;
+        let h = mix(qx.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ qy);
+        let a = (h >> 11) as f64 / (1u64 << 53) as f64;
+        let b = (mix(h) >> 11) as f64 / (1u64 << 53) as f64;
+        (a - 0.5, b - 0.5)
+    }
+
+    fn trace_jittered(&self, tracer: &mut Tracer<'_>, x: f64, y: f64, scale: f64) -> Sample {
+        if scale > 0.0 {
+            let (jx, jy) = self.jitter_at(x, y);
+            self.trace(tracer, x + jx * scale, y + jy * scale)
+        } else {
+            self.trace(tracer, x, y)
+        }
+    }
+}
+
+fn mix(mut z: u64) -> u64 {
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+/// Method 2 for one pixel whose corner samples are known: `corners` are top-left,
+/// top-right, bottom-left, bottom-right.
+pub struct Subdivider {
+    /// Samples of the current pixel on a grid of `side` × `side` points.
+    grid: Vec<Sample>,
+    /// The pixel generation that last wrote each grid point, so that the grid is never
+    /// cleared.
+    stamp: Vec<u32>,
+    generation: u32,
+    side: usize,
+}
+
+impl Subdivider {
+    pub fn new(depth: u32) -> Subdivider {
+        let side = (1usize << depth.saturating_sub(1)) + 1;
+        Subdivider {
+            grid: vec![Sample::default(); side * side],
+            stamp: vec![0; side * side],
+            generation: 0,
+            side,
+        }
+    }
+
+    pub fn pixel(
+        &mut self,
+        sampler: &Sampler<'_>,
+        tracer: &mut Tracer<'_>,
+        x: u32,
+        y: u32,
+        corners: [Sample; 4],
+    ) -> Sample {
+        self.generation = self.generation.wrapping_add(1);
+        if self.generation == 0 {
+            self.stamp.fill(0);
+            self.generation = 1;
+        }
+        let last = self.side - 1;
+        self.set(0, 0, corners[0]);
+        self.set(last, 0, corners[1]);
+        self.set(0, last, corners[2]);
+        self.set(last, last, corners[3]);
+        // POV-Ray divides the jitter amount by 2^depth + 1.
+        let scale = sampler.jitter / f64::from((1u32 << sampler.depth) + 1);
+        self.square(
+            sampler,
+            tracer,
+            (f64::from(x), f64::from(y)),
+            (0, 0),
+            last,
+            sampler.depth.saturating_sub(1),
+            scale,
+        )
+    }
+
+    fn set(&mut self, bx: usize, by: usize, s: Sample) {
+        let i = by * self.side + bx;
+        self.grid[i] = s;
+        self.stamp[i] = self.generation;
+    }
+
+    fn get(&self, bx: usize, by: usize) -> Sample {
+        self.grid[by * self.side + bx]
+    }
+
+    /// The mean over the square with top-left grid point `(bx, by)` and `step` points
+    /// across, subdividing while `level` allows and the corners differ.
+    #[allow(clippy::too_many_arguments)]
+    fn square(
+        &mut self,
+        sampler: &Sampler<'_>,
+        tracer: &mut Tracer<'_>,
+        pixel: (f64, f64),
+        (bx, by): (usize, usize),
+        step: usize,
+        level: u32,
+        jitter: f64,
+    ) -> Sample {
+        let c = [
+            self.get(bx, by),
+            self.get(bx + step, by),
+            self.get(bx, by + step),
+            self.get(bx + step, by + step),
+        ];
+        let split = level > 0
+            && step >= 2
+            && (0..4).any(|i| (i + 1..4).any(|j| sampler.differ(c[i], c[j])));
+        if !split {
+            return (c[0] + c[1] + c[2] + c[3]) * 0.25;
+        }
+        let half = step / 2;
+        let unit = 1.0 / (self.side - 1) as f64;
+        for (gx, gy) in [
+            (bx, by + half),
+            (bx + half, by),
+            (bx + step, by + half),
+            (bx + half, by + step),
+            (bx + half, by + half),
+        ] {
+            let i = gy * self.side + gx;
+            if self.stamp[i] != self.generation {
+                let px = pixel.0 + gx as f64 * unit;
+                let py = pixel.1 + gy as f64 * unit;
+                let s = sampler.trace_jittered(tracer, px, py, jitter);
+                self.set(gx, gy, s);
+            }
+        }
+        let mut sum = Sample::default();
+        for (qx, qy) in [
+            (bx, by),
+            (bx + half, by),
+            (bx, by + half),
+            (bx + half, by + half),
+        ] {
+            sum = sum + self.square(sampler, tracer, pixel, (qx, qy), half, level - 1, jitter);
+        }
+        sum * 0.25
+    }
+}
+
+/// Method 1: supersamples on a `depth` × `depth` grid, averaged with the centre sample.
+pub fn supersample_grid(
+    sampler: &Sampler<'_>,
+    tracer: &mut Tracer<'_>,
+    x: u32,
+    y: u32,
+    centre: Sample,
+) -> Sample {
+    let n = sampler.depth.max(1);
+    let step = 1.0 / f64::from(n);
+    let scale = sampler.jitter / f64::from(n);
+    let mut sum = centre;
+    for j in 0..n {
+        for i in 0..n {
+            let px = f64::from(x) + (f64::from(i) + 0.5) * step;
+            let py = f64::from(y) + (f64::from(j) + 0.5) * step;
+            sum = sum + sampler.trace_jittered(tracer, px, py, scale);
+        }
+    }
+    sum * (1.0 / f64::from(n * n + 1))
+}
+
+/// Method 1's test: whether a pixel differs from any of its four neighbours.
+pub fn needs_supersampling(sampler: &Sampler<'_>, centre: Sample, neighbours: &[Sample]) -> bool {
+    neighbours.iter().any(|n| sampler.differ(centre, *n))
+}

@@ -1,0 +1,67 @@
+//! `box { corner1, corner2 }`: an axis-aligned box in its own frame.
+
+use super::Roots;
+use crate::ray::Ray;
+use glam::DVec3;
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cuboid {
+    pub min: DVec3,
+    pub max: DVec3,
+}
+
+impl Cuboid {
+    pub fn new(a: DVec3, b: DVec3) -> Cuboid {
+        Cuboid {
+            min: a.min(b),
+            max: a.max(b),
+        }
+    }
+
+    /// Parts are faces: `2 * axis` for the low side, `2 * axis + 1` for the high side.
+    pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
+        let mut near = f64::NEG_INFINITY;
+        let mut far = f64::INFINITY;
+        let mut near_part = 0;
+        let mut far_part = 0;
+        for axis in 0..3 {
+            let o = ray.origin[axis];
+            let d = ray.direction[axis];
+            let (lo, hi) = (self.min[axis], self.max[axis]);
+            if d == 0.0 {
+                if o < lo || o > hi {
+                    return;
+                }
+                continue;
+            }
+            let (mut t1, mut t2) = ((lo - o) / d, (hi - o) / d);
+            let (mut p1, mut p2) = (2 * axis as u8, 2 * axis as u8 + 1);
+            if t1 > t2 {
+                std::mem::swap(&mut t1, &mut t2);
+                std::mem::swap(&mut p1, &mut p2);
+            }
+            if t1 > near {
+                near = t1;
+                near_part = p1;
+            }
+            if t2 < far {
+                far = t2;
+                far_part = p2;
+            }
+        }
+        if near <= far {
+            roots.push(near, near_part);
+            roots.push(far, far_part);
+        }
+    }
+
+    pub fn inside(&self, p: DVec3) -> bool {
+        p.cmpgt(self.min).all() && p.cmplt(self.max).all()
+    }
+
+    pub fn normal(&self, part: u8) -> DVec3 {
+        let mut n = DVec3::ZERO;
+        n[(part / 2) as usize] = if part.is_multiple_of(2) { -1.0 } else { 1.0 };
+        n
+    }
+}

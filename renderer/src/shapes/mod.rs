@@ -1,0 +1,160 @@
+//! Shapes in their own canonical frames: each knows its bounds, where a ray crosses its
+//! surface, whether a point is inside, and its normal; nothing of textures or of where it
+//! sits in the world (an object's transform places it, pbrt's split).
+
+mod cone;
+mod cuboid;
+mod cylinder;
+mod plane;
+mod sphere;
+
+pub use cone::Cone;
+pub use cuboid::Cuboid;
+pub use cylinder::Cylinder;
+pub use plane::Plane;
+pub use sphere::Sphere;
+
+use crate::bounds::Aabb;
+use crate::ray::Ray;
+use glam::DVec3;
+
+/// Where a ray crosses a shape: the ray parameter and which part of the surface (a box
+/// face, a cylinder cap), so that the normal can be found later for the one hit that wins.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Root {
+    pub t: f64,
+    pub part: u8,
+}
+
+/// The crossings of one ray with one shape, kept on the stack.
+#[derive(Debug, Clone)]
+pub struct Roots {
+    roots: [Root; Roots::CAPACITY],
+    len: usize,
+}
+
+impl Roots {
+    pub const CAPACITY: usize = 16;
+
+    pub fn new() -> Roots {
+        Roots {
+            roots: [Root { t: 0.0, part: 0 }; Roots::CAPACITY],
+            len: 0,
+        }
+    }
+
+    /// Records a crossing; NaN parameters (degenerate rays) are dropped here so that no
+    /// caller has to think of them.
+    pub fn push(&mut self, t: f64, part: u8) {
+        if t.is_finite() && self.len < Roots::CAPACITY {
+            self.roots[self.len] = Root { t, part };
+            self.len += 1;
+        }
+    }
+
+    pub fn as_slice(&self) -> &[Root] {
+        &self.roots[..self.len]
+    }
+}
+
+impl Default for Roots {
+    fn default() -> Self {
+        Roots::new()
+    }
+}
+
+/// A shape in its canonical frame.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Shape {
+    Sphere(Sphere),
+    Cuboid(Cuboid),
+    Cylinder(Cylinder),
+    Cone(Cone),
+    Plane(Plane),
+}
+
+impl Shape {
+    /// Every crossing of the ray with the surface, at any parameter.
+    pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
+        match self {
+            Shape::Sphere(s) => s.intersect(ray, roots),
+            Shape::Cuboid(s) => s.intersect(ray, roots),
+            Shape::Cylinder(s) => s.intersect(ray, roots),
+            Shape::Cone(s) => s.intersect(ray, roots),
+            Shape::Plane(s) => s.intersect(ray, roots),
+        }
+    }
+
+    pub fn inside(&self, p: DVec3) -> bool {
+        match self {
+            Shape::Sphere(s) => s.inside(p),
+            Shape::Cuboid(s) => s.inside(p),
+            Shape::Cylinder(s) => s.inside(p),
+            Shape::Cone(s) => s.inside(p),
+            Shape::Plane(s) => s.inside(p),
+        }
+    }
+
+    /// The outward normal at a surface point, not necessarily of unit length.
+    pub fn normal(&self, p: DVec3, part: u8) -> DVec3 {
+        match self {
+            Shape::Sphere(_) => p,
+            Shape::Cuboid(s) => s.normal(part),
+            Shape::Cylinder(s) => s.normal(p, part),
+            Shape::Cone(s) => s.normal(p, part),
+            Shape::Plane(s) => s.normal,
+        }
+    }
+
+    /// Bounds in the canonical frame; infinite for planes.
+    pub fn bounds(&self) -> Aabb {
+        match self {
+            Shape::Sphere(_) => Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0)),
+            Shape::Cuboid(s) => Aabb::new(s.min, s.max),
+            Shape::Cylinder(_) => Aabb::new(DVec3::new(-1.0, -1.0, 0.0), DVec3::ONE),
+            Shape::Cone(s) => {
+                let r = s.base_radius.max(s.cap_radius);
+                Aabb::new(DVec3::new(-r, -r, 0.0), DVec3::new(r, r, 1.0))
+            }
+            Shape::Plane(s) => s.bounds(),
+        }
+    }
+}
+
+/// The roots of `a t² + 2 b t + c = 0`, in the form that loses no precision when `b²` is
+/// much larger than `a c`. `None` when there is no real root.
+pub(crate) fn solve_quadratic_half(a: f64, b: f64, c: f64) -> Option<(f64, f64)> {
+    if a == 0.0 {
+        if b == 0.0 {
+            return None;
+        }
+        let t = -c / (2.0 * b);
+        return Some((t, t));
+    }
+    let disc = b * b - a * c;
+    if disc < 0.0 || !disc.is_finite() {
+        return None;
+    }
+    let q = -(b + b.signum() * disc.sqrt());
+    if q == 0.0 {
+        return Some((0.0, 0.0));
+    }
+    let t1 = q / a;
+    let t2 = c / q;
+    Some((t1.min(t2), t1.max(t2)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quadratic_is_stable() {
+        let (a, b) = solve_quadratic_half(1.0, -1.5, 2.0).unwrap();
+        assert_eq!((a, b), (1.0, 2.0));
+        // Roots 1e-9 and 1e9: the small one keeps its precision.
+        let (small, large) = solve_quadratic_half(1.0, -0.5 * (1e9 + 1e-9), 1.0).unwrap();
+        assert!((small - 1e-9).abs() < 1e-20 && (large - 1e9).abs() < 1e-3);
+        assert!(solve_quadratic_half(1.0, 0.0, 1.0).is_none());
+    }
+}

@@ -1,0 +1,43 @@
+//! `plane { normal, distance }`: the half-space below `normal · p = distance` is inside.
+
+use super::Roots;
+use crate::bounds::Aabb;
+use crate::ray::Ray;
+use glam::DVec3;
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Plane {
+    /// Unit length.
+    pub normal: DVec3,
+    pub distance: f64,
+}
+
+impl Plane {
+    pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
+        let denom = self.normal.dot(ray.direction);
+        if denom != 0.0 {
+            roots.push((self.distance - self.normal.dot(ray.origin)) / denom, 0);
+        }
+    }
+
+    pub fn inside(&self, p: DVec3) -> bool {
+        self.normal.dot(p) < self.distance
+    }
+
+    /// Planes along an axis are bounded on that axis, on one side.
+    pub fn bounds(&self) -> Aabb {
+        let mut b = Aabb::INFINITE;
+        for axis in 0..3 {
+            let n = self.normal[axis];
+            if n.abs() == 1.0 {
+                let v = self.distance * n;
+                if n > 0.0 {
+                    b.max[axis] = v;
+                } else {
+                    b.min[axis] = v;
+                }
+            }
+        }
+        b
+    }
+}
