@@ -2,12 +2,11 @@
 //! the object's transform folded in, materials shared between objects that share a texture,
 //! CSG trees with their bounds, lights, and the bounding volume hierarchy.
 
-use crate::bounds::Aabb;
 use crate::bvh::Bvh;
 use crate::colour::Sample;
 use crate::light::Light;
 use crate::material::{self, Material};
-use crate::object::{Csg, Leaf, Object, Visibility};
+use crate::object::{Csg, CsgKind, Leaf, Object, Visibility};
 use crate::shapes::{Cone, Cuboid, Cylinder, Plane, Shape, Sphere};
 use crate::tracer::{Quality, World};
 use analysis::scene::{self, CsgOp, Origin, Scene};
@@ -170,13 +169,24 @@ impl Builder {
                 if built.is_empty() {
                     return Ok(None);
                 }
-                let bounds = csg_bounds(*op, &built);
-                return Ok(Some(Object::Csg(Csg {
-                    op: *op,
-                    children: built,
-                    bounds,
-                    inverse: flags.inverse,
-                })));
+                let kind = match op {
+                    CsgOp::Union => CsgKind::Union,
+                    CsgOp::Merge => CsgKind::Merge,
+                    CsgOp::Intersection => CsgKind::Intersection,
+                    CsgOp::Difference => {
+                        // POV-Ray's difference: the first child within the inverse of
+                        // the others.
+                        let mut children = built.into_iter();
+                        let first = children.next();
+                        built = first
+                            .into_iter()
+                            .chain(children.map(Object::inverted))
+                            .collect();
+                        CsgKind::Intersection
+                    }
+                };
+                let csg = Object::Csg(Csg::new(kind, built));
+                return Ok(Some(if flags.inverse { csg.inverted() } else { csg }));
             }
             scene::Shape::Sphere { center, radius } => {
                 let r = radius.abs();
@@ -276,35 +286,4 @@ fn axis_frame(base: DVec3, cap: DVec3, radius: f64) -> Option<DAffine3> {
         DMat3::from_cols(u * radius, v * radius, axis),
         base,
     ))
-}
-
-/// Bounds of a CSG's surface: an inverted child bounds nothing, so it constrains an
-/// intersection no further.
-fn csg_bounds(op: CsgOp, children: &[Object]) -> Aabb {
-    let region = |o: &Object| {
-        if o.is_inverted() {
-            Aabb::INFINITE
-        } else {
-            o.bounds()
-        }
-    };
-    match op {
-        CsgOp::Union | CsgOp::Merge => children
-            .iter()
-            .fold(Aabb::EMPTY, |b, o| b.union(&o.bounds())),
-        CsgOp::Intersection => {
-            let surfaces = children
-                .iter()
-                .fold(Aabb::EMPTY, |b, o| b.union(&o.bounds()));
-            children
-                .iter()
-                .fold(surfaces, |b, o| b.intersection(&region(o)))
-        }
-        CsgOp::Difference => {
-            let surfaces = children
-                .iter()
-                .fold(Aabb::EMPTY, |b, o| b.union(&o.bounds()));
-            surfaces.intersection(&region(&children[0]))
-        }
-    }
 }

@@ -1,14 +1,14 @@
 //! Runtime objects: a shape bound to its placement and material (a leaf), or a CSG node
 //! over other objects. CSG follows POV-Ray's definition: a union keeps every crossing of its
-//! children, a merge the crossings outside the other children, an intersection those inside
-//! all the others, and a difference is the intersection of the first child with the inverse
-//! of the rest.
+//! children, a merge the crossings outside the other children, and an intersection those
+//! inside all the others. A difference is built as the intersection of its first child with
+//! the inverse of the rest, and inverting a CSG node swaps union and intersection over
+//! inverted children, so subtracting a union removes no surface the union hides.
 
 use crate::bounds::Aabb;
 use crate::material::Material;
 use crate::ray::{Ray, RayKind};
 use crate::shapes::{Roots, Shape};
-use analysis::scene::CsgOp;
 use glam::{DAffine3, DMat3, DVec3};
 use std::sync::Arc;
 
@@ -133,11 +133,48 @@ pub enum Object {
 
 #[derive(Debug, Clone)]
 pub struct Csg {
-    pub op: CsgOp,
+    pub kind: CsgKind,
     pub children: Vec<Object>,
+    /// Bounds of the surface.
     pub bounds: Aabb,
-    /// `inverse`: inside and outside swap; the surface stays.
-    pub inverse: bool,
+    /// Bounds of the inside: infinite once an inverted child makes it so.
+    pub region: Aabb,
+}
+
+/// The CSG operations a runtime node performs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CsgKind {
+    Union,
+    Merge,
+    Intersection,
+}
+
+impl Csg {
+    pub fn new(kind: CsgKind, children: Vec<Object>) -> Csg {
+        let surfaces = children
+            .iter()
+            .fold(Aabb::EMPTY, |b, o| b.union(&o.bounds()));
+        let (bounds, region) = match kind {
+            CsgKind::Union | CsgKind::Merge => {
+                let region = children
+                    .iter()
+                    .fold(Aabb::EMPTY, |b, o| b.union(&o.region()));
+                (surfaces, region)
+            }
+            CsgKind::Intersection => {
+                let region = children
+                    .iter()
+                    .fold(Aabb::INFINITE, |b, o| b.intersection(&o.region()));
+                (surfaces.intersection(&region), region)
+            }
+        };
+        Csg {
+            kind,
+            children,
+            bounds,
+            region,
+        }
+    }
 }
 
 /// A ray segment: the ray, its kind, and the open interval of parameters searched.
@@ -170,28 +207,44 @@ impl Object {
         }
     }
 
-    pub fn is_inverted(&self) -> bool {
+    /// Bounds of the inside.
+    pub fn region(&self) -> Aabb {
         match self {
-            Object::Leaf(l) => l.inverse,
-            Object::Csg(c) => c.inverse,
+            Object::Leaf(l) if l.inverse => Aabb::INFINITE,
+            Object::Leaf(l) => l.bounds,
+            Object::Csg(c) => c.region,
+        }
+    }
+
+    /// The same surface with inside and outside swapped, built as POV-Ray inverts: a leaf
+    /// flips, a union or merge becomes the intersection of its inverted children and an
+    /// intersection the union of them.
+    pub fn inverted(self) -> Object {
+        match self {
+            Object::Leaf(mut l) => {
+                l.inverse = !l.inverse;
+                Object::Leaf(l)
+            }
+            Object::Csg(c) => {
+                let kind = match c.kind {
+                    CsgKind::Union | CsgKind::Merge => CsgKind::Intersection,
+                    CsgKind::Intersection => CsgKind::Union,
+                };
+                Object::Csg(Csg::new(
+                    kind,
+                    c.children.into_iter().map(Object::inverted).collect(),
+                ))
+            }
         }
     }
 
     pub fn inside(&self, p: DVec3) -> bool {
         match self {
             Object::Leaf(l) => l.inside(p),
-            Object::Csg(c) => {
-                let inside = match c.op {
-                    CsgOp::Union | CsgOp::Merge => c.children.iter().any(|o| o.inside(p)),
-                    CsgOp::Intersection => c.children.iter().all(|o| o.inside(p)),
-                    CsgOp::Difference => c
-                        .children
-                        .iter()
-                        .enumerate()
-                        .all(|(j, o)| o.inside(p) == (j == 0)),
-                };
-                inside != c.inverse
-            }
+            Object::Csg(c) => match c.kind {
+                CsgKind::Union | CsgKind::Merge => c.children.iter().any(|o| o.inside(p)),
+                CsgKind::Intersection => c.children.iter().all(|o| o.inside(p)),
+            },
         }
     }
 
@@ -220,7 +273,7 @@ impl Object {
                 }
                 best
             }
-            Object::Csg(csg) if csg.op == CsgOp::Union => {
+            Object::Csg(csg) if csg.kind == CsgKind::Union => {
                 let mut q = *q;
                 let mut best = None;
                 for child in &csg.children {
@@ -269,7 +322,7 @@ impl Object {
                 for (i, child) in csg.children.iter().enumerate() {
                     let start = out.len();
                     child.all_hits(q, out);
-                    if csg.op == CsgOp::Union {
+                    if csg.kind == CsgKind::Union {
                         continue;
                     }
                     let mut kept = start;
@@ -291,11 +344,10 @@ impl Csg {
     /// Whether a crossing of child `from` at `p` is on this CSG's surface.
     fn keeps(&self, from: usize, p: DVec3) -> bool {
         let others = self.children.iter().enumerate().filter(|(j, _)| *j != from);
-        match self.op {
-            CsgOp::Union => true,
-            CsgOp::Merge => others.into_iter().all(|(_, o)| !o.inside(p)),
-            CsgOp::Intersection => others.into_iter().all(|(_, o)| o.inside(p)),
-            CsgOp::Difference => others.into_iter().all(|(j, o)| o.inside(p) == (j == 0)),
+        match self.kind {
+            CsgKind::Union => true,
+            CsgKind::Merge => others.into_iter().all(|(_, o)| !o.inside(p)),
+            CsgKind::Intersection => others.into_iter().all(|(_, o)| o.inside(p)),
         }
     }
 }

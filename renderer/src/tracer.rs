@@ -110,6 +110,10 @@ impl<'w> Tracer<'w> {
                 };
                 colour += incoming.colour * pigment.rgb * (finish.diffuse * intensity * opacity);
             }
+            // POV-Ray's shadowless (fill) lights cause no highlights.
+            if light.shadowless {
+                continue;
+            }
             if finish.specular > 0.0 {
                 let halfway = incoming.direction - ray.direction;
                 let len = halfway.length();
