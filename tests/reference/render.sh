@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Renders the reference images of the fidelity scenes listed in scenes.txt with Debian's
+# POV-Ray 3.7, one thread (+WT1), at each scene's settings, into png/NAME.png, and records
+# POV-Ray's own parse and trace times in povray-times.txt for the benchmark.
+#
+#   tests/reference/render.sh            every scene
+#   tests/reference/render.sh basic csg  only these
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+
+if ! command -v povray >/dev/null; then
+    if [ "$(id -u)" = 0 ]; then
+        apt-get update -qq && apt-get install -y -qq povray >/dev/null
+    else
+        echo "render.sh: povray is not installed (apt-get install povray)" >&2
+        exit 1
+    fi
+fi
+
+mkdir -p "$here/png"
+times="$here/povray-times.txt"
+[ -f "$times" ] || echo "# scene parse_seconds trace_seconds (povray +WT1)" > "$times"
+log="$(mktemp)"
+trap 'rm -f "$log"' EXIT
+
+while read -r line; do
+    line="${line%%|*}"
+    [[ -z "${line// }" || "$line" == \#* ]] && continue
+    read -r name scene options <<<"$line"
+    if [ $# -gt 0 ] && [[ ! " $* " == *" $name "* ]]; then
+        continue
+    fi
+    # shellcheck disable=SC2086 # the options are separate words on purpose
+    povray "+I$root/$scene" "+O$here/png/$name.png" +FN -D -V +WT1 $options \
+        "+L$(dirname "$root/$scene")" >"$log" 2>&1 || { cat "$log" >&2; exit 1; }
+    parse=$(grep -m1 'Parse Time:' "$log" | sed -E 's/.*\(([0-9.]+) seconds\).*/\1/')
+    trace=$(grep -m1 'Trace Time:' "$log" | sed -E 's/.*\(([0-9.]+) seconds\).*/\1/')
+    grep -v "^$name " "$times" > "$times.new" || true
+    echo "$name $parse $trace" >> "$times.new"
+    mv "$times.new" "$times"
+    echo "$name: parse ${parse}s trace ${trace}s"
+done < "$here/scenes.txt"
