@@ -2,6 +2,18 @@
 //! and produces a [`scene::Scene`], the compiled `function { }` form, and the incremental
 //! analysis database that the language server queries.
 
+pub mod eval;
+pub mod files;
 pub mod function;
 pub mod scene;
 pub mod stdinc;
+
+pub use eval::{Budgets, EvalOptions, Evaluation, Message, Stream, evaluate};
+pub use files::{FileSource, MemoryFiles, Sources};
+
+/// Checks a scene the way every front end does: the syntax errors of the main file first;
+/// when there are none, the evaluator's findings. The CLI's `check`, the renderer pipeline,
+/// the Typst plugin and the language server all call this, so they report the same errors.
+pub fn check(main: &str, files: &dyn FileSource, options: &EvalOptions) -> Evaluation {
+    evaluate(main, files, options)
+}

@@ -345,6 +345,7 @@ define_kinds! {
     MERGE_KW => "merge",
     MESH_KW => "mesh",
     MESH2_KW => "mesh2",
+    MESH_CAMERA_KW => "mesh_camera",
     METALLIC_KW => "metallic",
     METHOD_KW => "method",
     METRIC_KW => "metric",

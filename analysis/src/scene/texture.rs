@@ -64,6 +64,8 @@ pub enum Warp {
 /// The patterns shared by pigments, normals, textures and densities.
 #[derive(Debug, Clone, PartialEq)]
 pub enum PatternKind {
+    /// `average`: the map's entries blended by their weights (the map values).
+    Average,
     Agate {
         turb: f64,
     },

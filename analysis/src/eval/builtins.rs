@@ -1,0 +1,587 @@
+//! Built-in constants and functions usable in expressions: the float, vector and string
+//! functions of POV-Ray's reference, and the colour keywords.
+
+use super::tokens::Token;
+use super::value::{Terms, Value};
+use super::{Evaluator, Result};
+use glam::DVec3;
+use syntax::SyntaxKind::*;
+
+impl Evaluator<'_> {
+    /// The value of a built-in constant or function call starting at `token`, or `None`
+    /// when `token` does not start one.
+    pub fn builtin(&mut self, token: &Token) -> Result<Option<Value>> {
+        let float = |v: f64| Ok(Some(Value::Float(v)));
+        let vector = |v: DVec3| Ok(Some(Value::Vector(Terms::new(&[v.x, v.y, v.z]))));
+        match token.kind {
+            PI_KW => float(std::f64::consts::PI),
+            TAU_KW => float(std::f64::consts::TAU),
+            TRUE_KW | YES_KW | ON_KW => float(1.0),
+            FALSE_KW | NO_KW | OFF_KW => float(0.0),
+            X_KW => vector(DVec3::X),
+            Y_KW => vector(DVec3::Y),
+            Z_KW => vector(DVec3::Z),
+            T_KW => Ok(Some(Value::Vector(Terms::new(&[0.0, 0.0, 0.0, 1.0])))),
+            U_KW => Ok(Some(Value::Vector(Terms::new(&[1.0, 0.0])))),
+            V_KW => Ok(Some(Value::Vector(Terms::new(&[0.0, 1.0])))),
+            CLOCK_KW => float(self.options.clock),
+            CLOCK_DELTA_KW => float(0.0),
+            CLOCK_ON_KW => float(f64::from(u8::from(
+                self.options.final_frame > self.options.initial_frame,
+            ))),
+            INITIAL_CLOCK_KW => float(self.options.initial_clock),
+            FINAL_CLOCK_KW => float(self.options.final_clock),
+            INITIAL_FRAME_KW => float(f64::from(self.options.initial_frame)),
+            FINAL_FRAME_KW => float(f64::from(self.options.final_frame)),
+            FRAME_NUMBER_KW => float(f64::from(self.options.frame_number)),
+            IMAGE_WIDTH_KW => float(f64::from(self.options.image_width)),
+            IMAGE_HEIGHT_KW => float(f64::from(self.options.image_height)),
+            VERSION_KW => float(self.version),
+            COLOR_KW | COLOUR_KW | RGB_KW | RGBF_KW | RGBT_KW | RGBFT_KW | SRGB_KW | SRGBF_KW
+            | SRGBT_KW | SRGBFT_KW | RED_KW | GREEN_KW | BLUE_KW | FILTER_KW | TRANSMIT_KW => {
+                self.unget(token.clone());
+                Ok(Some(Value::Colour(self.colour()?)))
+            }
+            _ => self.builtin_function(token),
+        }
+    }
+
+    fn builtin_function(&mut self, token: &Token) -> Result<Option<Value>> {
+        let float = |v: f64| Ok(Some(Value::Float(v)));
+        let kind = token.kind;
+        let unary: Option<fn(f64) -> f64> = match kind {
+            ABS_KW => Some(f64::abs),
+            ACOS_KW => Some(f64::acos),
+            ACOSH_KW => Some(f64::acosh),
+            ASIN_KW => Some(f64::asin),
+            ASINH_KW => Some(f64::asinh),
+            ATAN_KW => Some(f64::atan),
+            ATANH_KW => Some(f64::atanh),
+            CEIL_KW => Some(f64::ceil),
+            COS_KW => Some(f64::cos),
+            COSH_KW => Some(f64::cosh),
+            DEGREES_KW => Some(f64::to_degrees),
+            EXP_KW => Some(f64::exp),
+            FLOOR_KW => Some(f64::floor),
+            INT_KW => Some(f64::trunc),
+            LN_KW => Some(f64::ln),
+            LOG_KW => Some(f64::log10),
+            RADIANS_KW => Some(f64::to_radians),
+            SIN_KW => Some(f64::sin),
+            SINH_KW => Some(f64::sinh),
+            SQRT_KW => Some(f64::sqrt),
+            TAN_KW => Some(f64::tan),
+            TANH_KW => Some(f64::tanh),
+            _ => None,
+        };
+        if let Some(f) = unary {
+            let args = self.float_args_exactly(token, 1)?;
+            return self.checked(token, f(args[0]));
+        }
+        match kind {
+            ATAN2_KW => {
+                let a = self.float_args_exactly(token, 2)?;
+                float(a[0].atan2(a[1]))
+            }
+            POW_KW => {
+                let a = self.float_args_exactly(token, 2)?;
+                self.checked(token, a[0].powf(a[1]))
+            }
+            MOD_KW => {
+                let a = self.float_args_exactly(token, 2)?;
+                if a[1] == 0.0 {
+                    return Err(self.error_at(token, "mod() by zero"));
+                }
+                float(a[0] % a[1])
+            }
+            DIV_KW => {
+                let a = self.float_args_exactly(token, 2)?;
+                if a[1] == 0.0 {
+                    return Err(self.error_at(token, "div() by zero"));
+                }
+                float((a[0] / a[1]).trunc())
+            }
+            MIN_KW | MAX_KW => {
+                let a = self.float_args()?;
+                if a.len() < 2 {
+                    return Err(self.error_at(
+                        token,
+                        format!("{}() takes at least 2 arguments", self.text(token)),
+                    ));
+                }
+                let pick = if kind == MIN_KW { f64::min } else { f64::max };
+                float(a.iter().copied().reduce(pick).unwrap_or(0.0))
+            }
+            SELECT_KW => {
+                let a = self.float_args()?;
+                match a.as_slice() {
+                    [c, neg, rest] => float(if *c < 0.0 { *neg } else { *rest }),
+                    [c, neg, zero, pos] => float(if *c < 0.0 {
+                        *neg
+                    } else if *c == 0.0 {
+                        *zero
+                    } else {
+                        *pos
+                    }),
+                    _ => Err(self.error_at(token, "select() takes 3 or 4 arguments")),
+                }
+            }
+            BITWISE_AND_KW | BITWISE_OR_KW | BITWISE_XOR_KW => {
+                let a = self.float_args()?;
+                if a.len() < 2 {
+                    return Err(self.error_at(
+                        token,
+                        format!("{}() takes at least 2 arguments", self.text(token)),
+                    ));
+                }
+                let ints = a.iter().map(|v| v.trunc() as i64 as i32);
+                let result = match kind {
+                    BITWISE_AND_KW => ints.reduce(|x, y| x & y),
+                    BITWISE_OR_KW => ints.reduce(|x, y| x | y),
+                    _ => ints.reduce(|x, y| x ^ y),
+                };
+                float(f64::from(result.unwrap_or(0)))
+            }
+            SEED_KW => {
+                let a = self.float_args_exactly(token, 1)?;
+                float(self.rng.seed(a[0]) as f64)
+            }
+            RAND_KW => {
+                let a = self.float_args_exactly(token, 1)?;
+                match self.rng.rand(a[0]) {
+                    Some(v) => float(v),
+                    None => {
+                        Err(self.error_at(token, "rand() of a stream that seed() did not create"))
+                    }
+                }
+            }
+            VDOT_KW => {
+                let (a, b) = self.two_vectors()?;
+                float(a.dot(b))
+            }
+            VLENGTH_KW => {
+                self.expect(L_PAREN, "'('")?;
+                let first = self.next()?;
+                self.unget(first.clone());
+                let value = self.value_in_parens()?;
+                self.expect(R_PAREN, "')'")?;
+                match value.terms() {
+                    Some(t) => float(t.as_slice().iter().map(|c| c * c).sum::<f64>().sqrt()),
+                    None => Err(self.error_at(
+                        &first,
+                        format!("expected a vector, found {}", value.type_name()),
+                    )),
+                }
+            }
+            VCROSS_KW => {
+                let (a, b) = self.two_vectors()?;
+                Ok(Some(vec3(a.cross(b))))
+            }
+            VNORMALIZE_KW => {
+                self.expect(L_PAREN, "'('")?;
+                let v = self.vector_in_parens()?;
+                self.expect(R_PAREN, "')'")?;
+                let length = v.length();
+                if length == 0.0 {
+                    self.warn_at(token, "vnormalize() of a zero-length vector");
+                    return Ok(Some(vec3(DVec3::ZERO)));
+                }
+                Ok(Some(vec3(v / length)))
+            }
+            VROTATE_KW => {
+                let (v, r) = self.two_vectors()?;
+                let t = crate::scene::Transform::rotate_degrees(r);
+                Ok(Some(vec3(t.vector(v))))
+            }
+            VAXIS_ROTATE_KW => {
+                self.expect(L_PAREN, "'('")?;
+                let v = self.vector_in_parens()?;
+                self.expect(COMMA, "','")?;
+                let axis = self.vector_in_parens()?;
+                self.expect(COMMA, "','")?;
+                let degrees = self.float_in_parens()?;
+                self.expect(R_PAREN, "')'")?;
+                if axis.length() == 0.0 {
+                    return Err(self.error_at(token, "vaxis_rotate() about a zero-length axis"));
+                }
+                let rotation =
+                    glam::DQuat::from_axis_angle(axis.normalize(), -degrees.to_radians());
+                Ok(Some(vec3(rotation * v)))
+            }
+            ASC_KW => {
+                let s = self.string_args_exactly(token, 1)?;
+                float(s[0].chars().next().map_or(0.0, |c| f64::from(u32::from(c))))
+            }
+            STRLEN_KW => {
+                let s = self.string_args_exactly(token, 1)?;
+                float(s[0].chars().count() as f64)
+            }
+            STRCMP_KW => {
+                let s = self.string_args_exactly(token, 2)?;
+                float(match s[0].cmp(&s[1]) {
+                    std::cmp::Ordering::Less => -1.0,
+                    std::cmp::Ordering::Equal => 0.0,
+                    std::cmp::Ordering::Greater => 1.0,
+                })
+            }
+            VAL_KW => {
+                let s = self.string_args_exactly(token, 1)?;
+                float(parse_leading_float(&s[0]))
+            }
+            FILE_EXISTS_KW => {
+                let s = self.string_args_exactly(token, 1)?;
+                float(f64::from(u8::from(self.source.read(&s[0]).is_some())))
+            }
+            DEFINED_KW => {
+                self.expect(L_PAREN, "'('")?;
+                let name = self.next_raw()?;
+                let defined = self.defined_item(&name)?;
+                self.expect(R_PAREN, "')'")?;
+                float(f64::from(u8::from(defined)))
+            }
+            DIMENSIONS_KW | DIMENSION_SIZE_KW => self.array_dimensions(token),
+            CONCAT_KW => {
+                let parts = self.string_args()?;
+                self.checked_string(parts.concat())
+            }
+            CHR_KW => {
+                let a = self.float_args_exactly(token, 1)?;
+                let code = a[0].trunc() as i64;
+                let c = u32::try_from(code)
+                    .ok()
+                    .and_then(char::from_u32)
+                    .ok_or_else(|| {
+                        self.error_at(token, format!("chr({code}) is not a character"))
+                    })?;
+                self.checked_string(c.to_string())
+            }
+            STR_KW => {
+                self.expect(L_PAREN, "'('")?;
+                let v = self.float_in_parens()?;
+                self.expect(COMMA, "','")?;
+                let width = self.float_in_parens()?.trunc() as i64;
+                self.expect(COMMA, "','")?;
+                let precision = self.float_in_parens()?.trunc() as i64;
+                self.expect(R_PAREN, "')'")?;
+                self.checked_string(format_float(v, width, precision))
+            }
+            VSTR_KW => {
+                self.expect(L_PAREN, "'('")?;
+                let n = (self.float_in_parens()?.trunc() as i64).clamp(2, 5) as usize;
+                self.expect(COMMA, "','")?;
+                let at = self.next()?;
+                self.unget(at.clone());
+                let value = self.value_in_parens()?;
+                self.expect(COMMA, "','")?;
+                let separator = self.string_in_parens()?;
+                self.expect(COMMA, "','")?;
+                let width = self.float_in_parens()?.trunc() as i64;
+                self.expect(COMMA, "','")?;
+                let precision = self.float_in_parens()?.trunc() as i64;
+                self.expect(R_PAREN, "')'")?;
+                let terms = match value {
+                    Value::Float(v) => Terms::splat(v, n as u8),
+                    Value::Vector(t) | Value::Colour(t) if t.len as usize <= n => {
+                        t.promoted(n as u8)
+                    }
+                    Value::Vector(_) | Value::Colour(_) => {
+                        return Err(self.error_at(
+                            &at,
+                            format!("vstr() was told {n} components but the vector has more"),
+                        ));
+                    }
+                    other => {
+                        return Err(self.error_at(
+                            &at,
+                            format!("expected a vector, found {}", other.type_name()),
+                        ));
+                    }
+                };
+                let parts: Vec<String> = terms.c[..n]
+                    .iter()
+                    .map(|&c| format_float(c, width, precision))
+                    .collect();
+                self.checked_string(parts.join(&separator))
+            }
+            SUBSTR_KW => {
+                self.expect(L_PAREN, "'('")?;
+                let s = self.string_in_parens()?;
+                self.expect(COMMA, "','")?;
+                let start = self.float_in_parens()?.trunc() as i64;
+                self.expect(COMMA, "','")?;
+                let len = self.float_in_parens()?.trunc() as i64;
+                self.expect(R_PAREN, "')'")?;
+                let chars: Vec<char> = s.chars().collect();
+                if start < 1 || len < 0 || (start + len - 1) as usize > chars.len() {
+                    return Err(self.error_at(
+                        token,
+                        format!(
+                            "substr() range {start}..{} is outside a string of length {}",
+                            start + len - 1,
+                            chars.len()
+                        ),
+                    ));
+                }
+                let piece: String = chars[(start - 1) as usize..(start - 1 + len) as usize]
+                    .iter()
+                    .collect();
+                Ok(Some(Value::String(piece.into())))
+            }
+            STRUPR_KW | STRLWR_KW => {
+                let s = self.string_args_exactly(token, 1)?;
+                let out = if kind == STRUPR_KW {
+                    s[0].to_ascii_uppercase()
+                } else {
+                    s[0].to_ascii_lowercase()
+                };
+                Ok(Some(Value::String(out.into())))
+            }
+            TRACE_KW | INSIDE_KW | MIN_EXTENT_KW | MAX_EXTENT_KW | VTURBULENCE_KW | DATETIME_KW
+            | NOW_KW => Err(self.unsupported(token, &format!("{}()", self.text(token)))),
+            _ => Ok(None),
+        }
+    }
+
+    fn checked(&self, token: &Token, v: f64) -> Result<Option<Value>> {
+        if v.is_nan() {
+            return Err(self.error_at(
+                token,
+                format!("{}() of an argument outside its domain", self.text(token)),
+            ));
+        }
+        Ok(Some(Value::Float(v)))
+    }
+
+    fn checked_string(&self, s: String) -> Result<Option<Value>> {
+        if s.len() > self.options.budgets.string_bytes {
+            return Err(self.budget_error(
+                format!(
+                    "string of {} bytes exceeds the budget of {} bytes",
+                    s.len(),
+                    self.options.budgets.string_bytes
+                ),
+                "max-string-bytes",
+            ));
+        }
+        Ok(Some(Value::String(s.into())))
+    }
+
+    fn float_args_exactly(&mut self, token: &Token, n: usize) -> Result<Vec<f64>> {
+        let args = self.float_args()?;
+        if args.len() != n {
+            let plural = if n == 1 { "" } else { "s" };
+            return Err(self.error_at(
+                token,
+                format!(
+                    "{}() takes {n} argument{plural}, not {}",
+                    self.text(token),
+                    args.len()
+                ),
+            ));
+        }
+        Ok(args)
+    }
+
+    fn string_args(&mut self) -> Result<Vec<String>> {
+        self.expect(L_PAREN, "'('")?;
+        let mut args = Vec::new();
+        loop {
+            args.push(self.string_in_parens()?);
+            let token = self.next()?;
+            match token.kind {
+                COMMA => continue,
+                R_PAREN => return Ok(args),
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected ',' or ')' in argument list, found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+
+    fn string_args_exactly(&mut self, token: &Token, n: usize) -> Result<Vec<String>> {
+        let args = self.string_args()?;
+        if args.len() != n {
+            let plural = if n == 1 { "" } else { "s" };
+            return Err(self.error_at(
+                token,
+                format!(
+                    "{}() takes {n} argument{plural}, not {}",
+                    self.text(token),
+                    args.len()
+                ),
+            ));
+        }
+        Ok(args)
+    }
+
+    fn two_vectors(&mut self) -> Result<(DVec3, DVec3)> {
+        self.expect(L_PAREN, "'('")?;
+        let a = self.vector_in_parens()?;
+        self.expect(COMMA, "','")?;
+        let b = self.vector_in_parens()?;
+        self.expect(R_PAREN, "')'")?;
+        Ok((a, b))
+    }
+
+    fn array_dimensions(&mut self, token: &Token) -> Result<Option<Value>> {
+        self.expect(L_PAREN, "'('")?;
+        let at = self.next()?;
+        self.unget(at.clone());
+        let value = self.value_in_parens()?;
+        let Value::Array(array) = value else {
+            return Err(self.error_at(
+                &at,
+                format!("expected an array, found {}", value.type_name()),
+            ));
+        };
+        let result = if token.kind == DIMENSIONS_KW {
+            array.dims.len() as f64
+        } else {
+            self.expect(COMMA, "','")?;
+            let dim = self.float_in_parens()?.trunc() as i64;
+            if dim < 1 || dim as usize > array.dims.len() {
+                return Err(self.error_at(
+                    token,
+                    format!(
+                        "dimension {dim} does not exist: the array has {}",
+                        array.dims.len()
+                    ),
+                ));
+            }
+            array.dims[dim as usize - 1] as f64
+        };
+        self.expect(R_PAREN, "')'")?;
+        Ok(Some(Value::Float(result)))
+    }
+
+    /// Whether `defined(...)`/`#ifdef (...)` names something: an identifier, an array
+    /// element or a dictionary key.
+    pub fn defined_item(&mut self, name: &Token) -> Result<bool> {
+        if name.kind != IDENT {
+            return Ok(name.kind.is_keyword());
+        }
+        let text = self.text(name).to_owned();
+        let Some(slot) = self.lookup(&text) else {
+            return Ok(false);
+        };
+        let value = slot.borrow().clone();
+        match value {
+            Value::Array(array) if self.peek_kind()? == L_BRACK => {
+                let mut indices = Vec::new();
+                while self.eat(L_BRACK)? {
+                    let open = name.clone();
+                    indices.push(self.array_index(&open)?);
+                    self.expect(R_BRACK, "']'")?;
+                }
+                let flat = self.flat_index(name, &array.dims, &indices)?;
+                Ok(array.items[flat].is_some())
+            }
+            Value::Dictionary(dict) if matches!(self.peek_kind()?, L_BRACK | DOT) => {
+                let key = if self.eat(DOT)? {
+                    let key = self.next_raw()?;
+                    self.text(&key).to_owned()
+                } else {
+                    self.expect(L_BRACK, "'['")?;
+                    let key = self.string()?;
+                    self.expect(R_BRACK, "']'")?;
+                    key
+                };
+                Ok(dict.contains_key(&key))
+            }
+            _ => Ok(true),
+        }
+    }
+}
+
+fn vec3(v: DVec3) -> Value {
+    Value::Vector(Terms::new(&[v.x, v.y, v.z]))
+}
+
+/// C's `strtod` on the start of a string, as POV-Ray's `val()`: "12abc" is 12, "abc" is 0.
+fn parse_leading_float(s: &str) -> f64 {
+    let s = s.trim_start();
+    let mut end = 0;
+    let bytes = s.as_bytes();
+    let mut seen_digit = false;
+    let mut seen_dot = false;
+    let mut seen_exp = false;
+    while end < bytes.len() {
+        let b = bytes[end];
+        let ok = match b {
+            b'0'..=b'9' => {
+                seen_digit = true;
+                true
+            }
+            b'+' | b'-' => end == 0 || matches!(bytes[end - 1], b'e' | b'E'),
+            b'.' if !seen_dot && !seen_exp => {
+                seen_dot = true;
+                true
+            }
+            b'e' | b'E' if seen_digit && !seen_exp => {
+                seen_exp = true;
+                true
+            }
+            _ => false,
+        };
+        if !ok {
+            break;
+        }
+        end += 1;
+    }
+    let mut candidate = &s[..end];
+    while !candidate.is_empty() {
+        if let Ok(v) = candidate.parse::<f64>() {
+            return v;
+        }
+        candidate = &candidate[..candidate.len() - 1];
+    }
+    0.0
+}
+
+/// `str(A, L, P)`: C's `%*.*f` with POV-Ray's twists: a negative width pads with zeros, a
+/// negative precision means C's default of six digits.
+pub fn format_float(v: f64, width: i64, precision: i64) -> String {
+    let precision = if precision < 0 {
+        6
+    } else {
+        precision.min(64) as usize
+    };
+    let width_abs = width.unsigned_abs().min(256) as usize;
+    let text = if width < 0 {
+        format!("{v:0width_abs$.precision$}")
+    } else {
+        format!("{v:width_abs$.precision$}")
+    };
+    text.replace("NaN", "nan")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn str_formats_like_the_reference_examples() {
+        assert_eq!(format_float(123.456, 0, 3), "123.456");
+        assert_eq!(format_float(123.456, 9, 3), "  123.456");
+        assert_eq!(format_float(123.456, 0, 2), "123.46");
+        assert_eq!(format_float(123.456, 0, 0), "123");
+        assert_eq!(format_float(123.456, 5, 0), "  123");
+        assert_eq!(format_float(123.0, 7, 2), " 123.00");
+        assert_eq!(format_float(123.456, 0, -1), "123.456000");
+        assert_eq!(format_float(123.456, -9, 3), "00123.456");
+        assert_eq!(format_float(-1.5, -6, 1), "-001.5");
+    }
+
+    #[test]
+    fn val_reads_a_leading_number() {
+        assert_eq!(parse_leading_float("123.45"), 123.45);
+        assert_eq!(parse_leading_float(" -2e3x"), -2000.0);
+        assert_eq!(parse_leading_float("abc"), 0.0);
+    }
+}

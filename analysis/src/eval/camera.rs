@@ -1,0 +1,186 @@
+//! `camera { }`. Items apply in POV-Ray's order, measured against POV-Ray 3.7: `angle`
+//! rescales `direction` at once from the current `right`; `look_at` waits for the end of the
+//! statement and keeps the lengths (and the handedness) of direction, right and up; then
+//! transformations move the result.
+
+use super::value::{CameraValue, Value};
+use super::{Evaluator, Result};
+use crate::scene::{Camera, CameraKind, FocalBlur};
+use glam::DVec3;
+use syntax::SyntaxKind::*;
+
+impl Evaluator<'_> {
+    /// A camera statement, kept as a [`CameraValue`] so that a declared camera can be
+    /// modified later.
+    pub fn camera_value(&mut self) -> Result<CameraValue> {
+        let keyword = self.expect(CAMERA_KW, "'camera'")?;
+        self.expect(L_BRACE, "'{'")?;
+        let first = self.next()?;
+        let mut value = match first.slot.as_ref().map(|s| s.borrow().clone()) {
+            Some(Value::Camera(c)) => CameraValue::clone(&c),
+            _ => {
+                self.unget(first);
+                CameraValue {
+                    camera: Camera::default(),
+                    look_at: None,
+                    transforms: Vec::new(),
+                }
+            }
+        };
+        if value.camera.origin.is_none() {
+            value.camera.origin = Some(self.span(&keyword));
+        }
+        loop {
+            let token = self.next()?;
+            let camera = &mut value.camera;
+            match token.kind {
+                R_BRACE => return Ok(value),
+                PERSPECTIVE_KW => camera.kind = CameraKind::Perspective,
+                ORTHOGRAPHIC_KW => camera.kind = CameraKind::Orthographic,
+                FISHEYE_KW => camera.kind = CameraKind::Fisheye,
+                ULTRA_WIDE_ANGLE_KW => camera.kind = CameraKind::UltraWideAngle,
+                OMNIMAX_KW => camera.kind = CameraKind::Omnimax,
+                PANORAMIC_KW => camera.kind = CameraKind::Panoramic,
+                CYLINDER_KW => {
+                    let n = self.int()?;
+                    if !(1..=4).contains(&n) {
+                        return Err(self.error_at(
+                            &token,
+                            format!("cylinder camera type must be 1 to 4, not {n}"),
+                        ));
+                    }
+                    value.camera.kind = CameraKind::Cylinder(n as u8);
+                }
+                SPHERICAL_KW => {
+                    camera.kind = CameraKind::Spherical {
+                        h_angle: 360.0,
+                        v_angle: 180.0,
+                    }
+                }
+                LOCATION_KW => camera.location = self.vector()?,
+                DIRECTION_KW => camera.direction = self.vector()?,
+                RIGHT_KW => camera.right = self.vector()?,
+                UP_KW => camera.up = self.vector()?,
+                SKY_KW => camera.sky = self.vector()?,
+                LOOK_AT_KW => value.look_at = Some(self.vector()?),
+                ANGLE_KW => {
+                    let angle = self.float()?;
+                    let vertical = if self.eat(COMMA)? {
+                        Some(self.float()?)
+                    } else {
+                        None
+                    };
+                    self.apply_angle(&mut value.camera, &token, angle, vertical)?;
+                }
+                APERTURE_KW => blur(camera).aperture = self.float()?,
+                BLUR_SAMPLES_KW => {
+                    let first = self.int()?;
+                    let (min, max) = if self.eat(COMMA)? {
+                        (first, self.int()?)
+                    } else {
+                        (first, first)
+                    };
+                    let b = blur(&mut value.camera);
+                    b.min_samples = min.max(1) as u32;
+                    b.max_samples = max.max(1) as u32;
+                }
+                FOCAL_POINT_KW => blur(camera).focal_point = self.vector()?,
+                CONFIDENCE_KW => blur(camera).confidence = self.float()?,
+                VARIANCE_KW => blur(camera).variance = self.float()?,
+                NORMAL_KW | BOKEH_KW | MESH_CAMERA_KW => {
+                    return Err(self.unsupported(&token, &format!("camera {}", self.text(&token))));
+                }
+                kind if Self::starts_transform(kind) => {
+                    let t = self.transformation(&token)?;
+                    value.transforms.push(t);
+                }
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected a camera item or '}}', found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+
+    fn apply_angle(
+        &self,
+        camera: &mut Camera,
+        at: &super::tokens::Token,
+        angle: f64,
+        vertical: Option<f64>,
+    ) -> Result<()> {
+        if angle < 0.0 {
+            return Err(self.error_at(at, "a camera angle must not be negative"));
+        }
+        camera.angle = Some(angle);
+        match &mut camera.kind {
+            CameraKind::Perspective => {
+                if angle >= 180.0 {
+                    return Err(self.error_at(
+                        at,
+                        "a perspective camera's angle must be less than 180 degrees",
+                    ));
+                }
+                let length = 0.5 * camera.right.length() / (angle.to_radians() / 2.0).tan();
+                camera.direction = camera.direction.normalize_or(DVec3::Z) * length;
+            }
+            CameraKind::Spherical { h_angle, v_angle } => {
+                *h_angle = angle;
+                *v_angle = vertical.unwrap_or(angle / 2.0);
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// The final camera: `look_at`, then the transformations.
+    pub fn finish_camera(&self, value: &CameraValue) -> Camera {
+        let mut camera = value.camera.clone();
+        if let Some(target) = value.look_at {
+            let direction_length = camera.direction.length();
+            let up_length = camera.up.length();
+            let right_length = camera.right.length();
+            let handedness = camera.up.cross(camera.direction).dot(camera.right);
+            let direction =
+                (target - camera.location).normalize_or(camera.direction.normalize_or(DVec3::Z));
+            let mut right = camera.sky.cross(direction);
+            if right.length() < 1e-12 {
+                right = camera.right;
+            }
+            let right = right.normalize_or(DVec3::X);
+            let up = direction.cross(right).normalize_or(DVec3::Y);
+            camera.direction = direction * direction_length;
+            camera.right = right
+                * if handedness > 0.0 {
+                    right_length
+                } else {
+                    -right_length
+                };
+            camera.up = up * up_length;
+        }
+        for t in &value.transforms {
+            camera.location = t.point(camera.location);
+            camera.direction = t.vector(camera.direction);
+            camera.right = t.vector(camera.right);
+            camera.up = t.vector(camera.up);
+            camera.sky = t.vector(camera.sky);
+        }
+        camera
+    }
+}
+
+fn blur(camera: &mut Camera) -> &mut FocalBlur {
+    camera.focal_blur.get_or_insert(FocalBlur {
+        aperture: 0.0,
+        min_samples: 4,
+        max_samples: 4,
+        focal_point: DVec3::ZERO,
+        confidence: 0.9,
+        variance: 1.0 / 128.0,
+    })
+}

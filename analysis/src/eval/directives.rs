@@ -1,0 +1,805 @@
+//! The `#` directives: declarations, conditionals, loops, macros, includes and messages.
+//! They run inside the token getter, so they may stand between any two tokens of a scene.
+
+use super::expr::EPSILON;
+use super::stream::SkipStop;
+use super::tokens::{Cond, Frame, FrameKind, Token};
+use super::value::{Array, Value};
+use super::{Evaluator, Message, Result, Stream};
+use std::collections::HashMap;
+use std::rc::Rc;
+use syntax::SyntaxKind::*;
+
+impl Evaluator<'_> {
+    /// Runs the directive whose `#` was just read.
+    pub fn directive(&mut self, hash: Token) -> Result<()> {
+        let keyword = self.next_raw()?;
+        match keyword.kind {
+            DECLARE_KW => self.declaration(false),
+            LOCAL_KW => self.declaration(true),
+            UNDEF_KW => {
+                let name = self.next_raw()?;
+                if name.kind != IDENT {
+                    return Err(self.error_at(
+                        &name,
+                        format!(
+                            "expected an identifier after #undef, found {}",
+                            self.describe(&name)
+                        ),
+                    ));
+                }
+                let text = self.text(&name).to_owned();
+                if !self.undef(&text) {
+                    self.warn_at(&name, format!("#undef of '{text}', which is not declared"));
+                }
+                Ok(())
+            }
+            IF_KW => {
+                let taken = self.condition()?;
+                self.branch(taken, &hash)
+            }
+            IFDEF_KW | IFNDEF_KW => {
+                self.expect(L_PAREN, "'('")?;
+                let name = self.next_raw()?;
+                let defined = self.defined_item(&name)?;
+                self.expect(R_PAREN, "')'")?;
+                self.branch(defined == (keyword.kind == IFDEF_KW), &hash)
+            }
+            ELSE_KW | ELSEIF_KW => self.else_directive(&hash, keyword.kind == ELSEIF_KW),
+            WHILE_KW => {
+                let cond_pos = self.position();
+                self.loop_test(cond_pos, &hash, hash.start)
+            }
+            FOR_KW => self.for_directive(&hash),
+            SWITCH_KW => self.switch_directive(&hash),
+            CASE_KW | RANGE_KW => self.case_directive(&hash, &keyword),
+            BREAK_KW => self.break_directive(&hash),
+            END_KW => self.end_directive(&hash),
+            MACRO_KW => self.define_macro(&hash),
+            INCLUDE_KW => self.include(),
+            VERSION_KW => {
+                let first = self.next()?;
+                self.unget(first.clone());
+                let version = self.float()?;
+                if !self.eat(SEMICOLON)? {
+                    self.warn_at(&first, "missing ';' after #version");
+                }
+                self.version = version;
+                self.version_set = true;
+                Ok(())
+            }
+            DEBUG_KW | WARNING_KW | ERROR_KW | RENDER_KW | STATISTICS_KW => {
+                let text = self.string()?;
+                match keyword.kind {
+                    WARNING_KW => {
+                        self.warn_at(&hash, text);
+                        Ok(())
+                    }
+                    ERROR_KW => Err(self.error_at(&hash, text)),
+                    _ => {
+                        self.messages.push(Message {
+                            stream: Stream::Debug,
+                            text,
+                        });
+                        Ok(())
+                    }
+                }
+            }
+            DEFAULT_KW => self.default_directive(),
+            FOPEN_KW | FCLOSE_KW | READ_KW | WRITE_KW => {
+                Err(self.unsupported(&keyword, &format!("#{}", self.text(&keyword))))
+            }
+            _ => Err(self.error_at(
+                &keyword,
+                format!("unknown directive '#{}'", self.text(&keyword)),
+            )),
+        }
+    }
+
+    /// `#declare`/`#local NAME[index]... = value [;]`.
+    fn declaration(&mut self, local: bool) -> Result<()> {
+        let mut name = self.next_raw()?;
+        if name.kind == DEPRECATED_KW {
+            name = self.next_raw()?;
+            if name.kind == ONCE_KW {
+                name = self.next_raw()?;
+            }
+            if name.kind == STRING {
+                name = self.next_raw()?;
+            }
+        }
+        if name.kind != IDENT {
+            let message = if name.kind.is_keyword() {
+                format!(
+                    "'{}' is a reserved word and cannot be declared",
+                    self.text(&name)
+                )
+            } else {
+                format!(
+                    "expected an identifier to declare, found {}",
+                    self.describe(&name)
+                )
+            };
+            return Err(self.error_at(&name, message));
+        }
+        let text = self.text(&name).to_owned();
+        let mut indices = Vec::new();
+        let mut key = None;
+        loop {
+            let next = self.next()?;
+            match next.kind {
+                L_BRACK if key.is_none() => {
+                    let at = next.clone();
+                    if self.peek_kind()? == STRING {
+                        key = Some(self.string()?);
+                    } else {
+                        indices.push((self.array_index(&at)?, at));
+                    }
+                    self.expect(R_BRACK, "']'")?;
+                }
+                DOT if indices.is_empty() && key.is_none() => {
+                    let member = self.next_raw()?;
+                    key = Some(self.text(&member).to_owned());
+                }
+                EQ => break,
+                _ => {
+                    return Err(self.error_at(
+                        &next,
+                        format!(
+                            "expected '=' after '{text}', found {}",
+                            self.describe(&next)
+                        ),
+                    ));
+                }
+            }
+        }
+        let first = self.next()?;
+        self.unget(first.clone());
+        let value = self.rvalue()?;
+        let needs_semicolon = value.is_numeric() || matches!(value, Value::String(_));
+        if !indices.is_empty() {
+            self.assign_element(&name, &text, &indices, value)?;
+        } else if let Some(key) = key {
+            self.assign_key(&name, &text, key, value)?;
+        } else if local {
+            self.declare_local(&text, value);
+        } else {
+            self.declare(&text, value);
+        }
+        if !self.eat(SEMICOLON)? && needs_semicolon && self.version >= 3.5 {
+            return Err(self
+                .error_at(
+                    &first,
+                    "missing ';' after the declaration of a float, vector, color or string",
+                )
+                .with_note_boxed("POV-Ray 3.5 and later require a ';' after these declarations"));
+        }
+        Ok(())
+    }
+
+    fn assign_element(
+        &mut self,
+        at: &Token,
+        name: &str,
+        indices: &[(i64, Token)],
+        value: Value,
+    ) -> Result<()> {
+        let Some(slot) = self.lookup(name) else {
+            return Err(self.undeclared(at));
+        };
+        let mut stored = slot.borrow_mut();
+        let Value::Array(array) = &mut *stored else {
+            return Err(self.error_at(
+                at,
+                format!("'{name}' is a {}, not an array", stored.type_name()),
+            ));
+        };
+        if indices.len() != array.dims.len() {
+            return Err(self.error_at(
+                at,
+                format!(
+                    "'{name}' has {} dimensions but {} indices were given",
+                    array.dims.len(),
+                    indices.len()
+                ),
+            ));
+        }
+        let plain: Vec<i64> = indices.iter().map(|(i, _)| *i).collect();
+        let flat = self.flat_index(&indices[0].1, &array.dims, &plain)?;
+        let array = Rc::make_mut(array);
+        if !array.mixed
+            && let Some(existing) = array.items.iter().flatten().next()
+            && !same_kind(existing, &value)
+        {
+            return Err(self.error_at(
+                at,
+                format!(
+                    "cannot store a {} in an array of {} (declare it `array mixed` to allow this)",
+                    value.type_name(),
+                    existing.type_name()
+                ),
+            ));
+        }
+        array.items[flat] = Some(value);
+        Ok(())
+    }
+
+    fn assign_key(&mut self, at: &Token, name: &str, key: String, value: Value) -> Result<()> {
+        let Some(slot) = self.lookup(name) else {
+            return Err(self.undeclared(at));
+        };
+        let mut stored = slot.borrow_mut();
+        let Value::Dictionary(dict) = &mut *stored else {
+            return Err(self.error_at(
+                at,
+                format!("'{name}' is a {}, not a dictionary", stored.type_name()),
+            ));
+        };
+        Rc::make_mut(dict).insert(key, value);
+        Ok(())
+    }
+
+    /// The right-hand side of a declaration or a macro argument: a value of any type.
+    pub fn rvalue(&mut self) -> Result<Value> {
+        let token = self.next()?;
+        let kind = token.kind;
+        self.unget(token.clone());
+        if Self::starts_object(kind) {
+            return Ok(Value::Object(Rc::new(self.object()?)));
+        }
+        match kind {
+            LIGHT_SOURCE_KW => Ok(Value::Light(Rc::new(self.light_source()?))),
+            CAMERA_KW => Ok(Value::Camera(Rc::new(self.camera_value()?))),
+            TEXTURE_KW => {
+                self.next()?;
+                Ok(Value::Texture(Rc::new(self.texture_body()?)))
+            }
+            PIGMENT_KW => {
+                self.next()?;
+                Ok(Value::Pigment(Rc::new(self.pigment_body()?)))
+            }
+            NORMAL_KW => {
+                self.next()?;
+                Ok(Value::Normal(Rc::new(self.normal_body()?)))
+            }
+            FINISH_KW => {
+                self.next()?;
+                Ok(Value::Finish(Rc::new(self.finish_body(None)?)))
+            }
+            INTERIOR_KW => {
+                self.next()?;
+                Ok(Value::Interior(Rc::new(self.interior_body()?)))
+            }
+            COLOR_MAP_KW | COLOUR_MAP_KW => {
+                self.next()?;
+                Ok(Value::ColourMap(Rc::new(self.colour_map_body()?)))
+            }
+            PIGMENT_MAP_KW => {
+                self.next()?;
+                Ok(Value::PigmentMap(Rc::new(self.pigment_map_body()?)))
+            }
+            TRANSFORM_KW => {
+                self.next()?;
+                Ok(Value::Transform(Rc::new(self.transform_body()?)))
+            }
+            FUNCTION_KW => Ok(Value::Function(std::sync::Arc::new(self.function_value()?))),
+            SPLINE_KW => {
+                self.next()?;
+                Ok(Value::Spline(Rc::new(self.spline_body()?)))
+            }
+            ARRAY_KW => {
+                self.next()?;
+                Ok(Value::Array(Rc::new(self.array_body()?)))
+            }
+            DICTIONARY_KW => {
+                self.next()?;
+                Ok(Value::Dictionary(Rc::new(self.dictionary_body()?)))
+            }
+            MATERIAL_KW | MEDIA_KW | DENSITY_KW | NORMAL_MAP_KW | TEXTURE_MAP_KW | SLOPE_MAP_KW
+            | DENSITY_MAP_KW | FOG_KW | RAINBOW_KW | SKY_SPHERE_KW => {
+                Err(self.unsupported(&token, &format!("declaring a {}", self.text(&token))))
+            }
+            _ => self.expression(),
+        }
+    }
+
+    /// `array[N][M] [mixed] { ... }`, after `array`.
+    fn array_body(&mut self) -> Result<Array> {
+        let mut dims = Vec::new();
+        let mut at = self.next()?;
+        let mut mixed = false;
+        if at.kind == MIXED_KW {
+            mixed = true;
+            at = self.next()?;
+        }
+        while at.kind == L_BRACK {
+            if self.eat(R_BRACK)? {
+                dims.push(None);
+            } else {
+                let size = self.array_index(&at)?;
+                if size <= 0 {
+                    return Err(
+                        self.error_at(&at, format!("array dimension must be positive, not {size}"))
+                    );
+                }
+                dims.push(Some(size as usize));
+                self.expect(R_BRACK, "']'")?;
+            }
+            at = self.next()?;
+        }
+        if at.kind == MIXED_KW {
+            mixed = true;
+            at = self.next()?;
+        }
+        if dims.is_empty() {
+            return Err(self.error_at(&at, "expected '[' with the array's size"));
+        }
+        let initializer = if at.kind == L_BRACE {
+            Some(self.array_initializer(&at, dims.len())?)
+        } else {
+            self.unget(at.clone());
+            None
+        };
+        let sizes: Vec<usize> = match (&initializer, dims.iter().all(Option::is_some)) {
+            (_, true) => dims.iter().map(|d| d.unwrap_or(0)).collect(),
+            (Some(init), false) => init.shape.clone(),
+            (None, false) => {
+                return Err(self.error_at(&at, "an array without sizes needs an initializer"));
+            }
+        };
+        let total = sizes.iter().try_fold(1usize, |acc, &d| acc.checked_mul(d));
+        let total = match total {
+            Some(t) if t <= self.options.budgets.array_elements => t,
+            _ => {
+                return Err(self.budget_error(
+                    format!(
+                        "array of {sizes:?} elements exceeds the budget of {} elements",
+                        self.options.budgets.array_elements
+                    ),
+                    "max-array-elements",
+                ));
+            }
+        };
+        let mut items = vec![None; total];
+        if let Some(init) = initializer {
+            if init.shape != sizes {
+                return Err(self.error_at(
+                    &at,
+                    format!(
+                        "the initializer has shape {:?} but the array is declared {:?}",
+                        init.shape, sizes
+                    ),
+                ));
+            }
+            for (slot, value) in items.iter_mut().zip(init.values) {
+                *slot = Some(value);
+            }
+        }
+        Ok(Array {
+            dims: sizes,
+            items,
+            mixed,
+        })
+    }
+
+    fn array_initializer(&mut self, open: &Token, depth: usize) -> Result<Initializer> {
+        let mut values = Vec::new();
+        let mut shape: Option<Vec<usize>> = None;
+        let mut count = 0;
+        loop {
+            if self.eat(R_BRACE)? {
+                break;
+            }
+            if depth > 1 {
+                let inner_open = self.expect(L_BRACE, "'{' for the next array dimension")?;
+                let inner = self.array_initializer(&inner_open, depth - 1)?;
+                if shape.as_ref().is_some_and(|s| *s != inner.shape) {
+                    return Err(
+                        self.error_at(&inner_open, "rows of an array initializer differ in size")
+                    );
+                }
+                shape = Some(inner.shape);
+                values.extend(inner.values);
+            } else {
+                values.push(self.rvalue()?);
+            }
+            count += 1;
+            if !self.eat(COMMA)? {
+                self.expect(R_BRACE, "'}' or ','")?;
+                break;
+            }
+        }
+        if count == 0 {
+            return Err(self.error_at(open, "empty array initializer"));
+        }
+        let mut full = vec![count];
+        full.extend(shape.unwrap_or_default());
+        Ok(Initializer {
+            shape: full,
+            values,
+        })
+    }
+
+    /// `dictionary { ["key"]: value, ... }`, after `dictionary`.
+    fn dictionary_body(&mut self) -> Result<super::value::Dictionary> {
+        self.expect(L_BRACE, "'{'")?;
+        let mut dict = super::value::Dictionary::new();
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => return Ok(dict),
+                L_BRACK => {
+                    let key = self.string()?;
+                    self.expect(R_BRACK, "']'")?;
+                    self.expect(COLON, "':'")?;
+                    let value = self.rvalue()?;
+                    dict.insert(key, value);
+                    self.eat(COMMA)?;
+                }
+                IDENT => {
+                    let key = self.text(&token).to_owned();
+                    self.expect(COLON, "':'")?;
+                    let value = self.rvalue()?;
+                    dict.insert(key, value);
+                    self.eat(COMMA)?;
+                }
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected '[\"key\"]: value' or '}}', found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+
+    fn branch(&mut self, taken: bool, hash: &Token) -> Result<()> {
+        if taken {
+            self.conds().push(Cond::If {
+                opened_at: hash.start,
+            });
+            return Ok(());
+        }
+        loop {
+            match self.skip_block(true, hash)? {
+                SkipStop::End => return Ok(()),
+                SkipStop::Else => {
+                    self.conds().push(Cond::If {
+                        opened_at: hash.start,
+                    });
+                    return Ok(());
+                }
+                SkipStop::ElseIf => {
+                    if self.condition()? {
+                        self.conds().push(Cond::If {
+                            opened_at: hash.start,
+                        });
+                        return Ok(());
+                    }
+                }
+                SkipStop::Case | SkipStop::Range | SkipStop::Break => {
+                    return Err(
+                        self.error_at(hash, "#case, #range or #break inside #if without #switch")
+                    );
+                }
+            }
+        }
+    }
+
+    fn else_directive(&mut self, hash: &Token, elseif: bool) -> Result<()> {
+        match self.conds().last().cloned() {
+            Some(Cond::If { .. }) => {
+                self.conds().pop();
+                self.skip_block(false, hash)?;
+                Ok(())
+            }
+            Some(Cond::Switch { .. }) if !elseif => Ok(()),
+            _ => Err(self.error_at(
+                hash,
+                format!(
+                    "#{} without a matching #if",
+                    if elseif { "elseif" } else { "else" }
+                ),
+            )),
+        }
+    }
+
+    /// Evaluates a `#while` condition at `cond_pos`; enters the body or skips past `#end`.
+    fn loop_test(&mut self, cond_pos: usize, hash: &Token, opened_at: u32) -> Result<()> {
+        if self.condition()? {
+            self.conds().push(Cond::While {
+                cond_pos,
+                opened_at,
+            });
+        } else {
+            self.skip_block(false, hash)?;
+        }
+        Ok(())
+    }
+
+    /// Counts one loop iteration; the error points at the loop's `#while` or `#for`.
+    fn count_iteration(&mut self, hash: &Token, opened_at: u32) -> Result<()> {
+        self.loop_iterations += 1;
+        if self.loop_iterations > self.options.budgets.loop_iterations {
+            let range = syntax::TextRange::at(opened_at.into(), 1.into());
+            let mut error = self.error_in(
+                hash.file,
+                range,
+                format!(
+                    "loop iteration budget of {} exceeded (endless loop?)",
+                    self.options.budgets.loop_iterations
+                ),
+            );
+            error.notes.push("raise the limit with the `max-loop-iterations` option if the scene really needs more".into());
+            return Err(error);
+        }
+        Ok(())
+    }
+
+    fn for_directive(&mut self, hash: &Token) -> Result<()> {
+        self.expect(L_PAREN, "'('")?;
+        let name = self.next_raw()?;
+        if name.kind != IDENT {
+            return Err(self.error_at(
+                &name,
+                format!("expected the loop variable, found {}", self.describe(&name)),
+            ));
+        }
+        let name = self.text(&name).to_owned();
+        self.expect(COMMA, "','")?;
+        let start = self.float_in_parens()?;
+        self.expect(COMMA, "','")?;
+        let end = self.float_in_parens()?;
+        let step = if self.eat(COMMA)? {
+            self.float_in_parens()?
+        } else {
+            1.0
+        };
+        self.expect(R_PAREN, "')'")?;
+        if step == 0.0 {
+            return Err(self.error_at(hash, "#for with a step of 0 never ends"));
+        }
+        self.declare_local(&name, Value::Float(start));
+        if for_continues(start, end, step) {
+            let body_pos = self.position();
+            self.conds().push(Cond::For {
+                name,
+                end,
+                step,
+                body_pos,
+                opened_at: hash.start,
+            });
+        } else {
+            self.skip_block(false, hash)?;
+        }
+        Ok(())
+    }
+
+    fn switch_directive(&mut self, hash: &Token) -> Result<()> {
+        self.expect(L_PAREN, "'('")?;
+        let value = self.float_in_parens()?;
+        self.expect(R_PAREN, "')'")?;
+        self.conds().push(Cond::Switch {
+            value,
+            opened_at: hash.start,
+        });
+        self.next_clause(value, hash)
+    }
+
+    /// Skips to the next `#case`/`#range` that matches `value`, an `#else`, or the `#end`.
+    fn next_clause(&mut self, value: f64, hash: &Token) -> Result<()> {
+        loop {
+            match self.skip_block(true, hash)? {
+                SkipStop::End => {
+                    self.conds().pop();
+                    return Ok(());
+                }
+                SkipStop::Else => return Ok(()),
+                SkipStop::Case => {
+                    if self.case_matches(value, false)? {
+                        return Ok(());
+                    }
+                }
+                SkipStop::Range => {
+                    if self.case_matches(value, true)? {
+                        return Ok(());
+                    }
+                }
+                SkipStop::Break | SkipStop::ElseIf => {}
+            }
+        }
+    }
+
+    fn case_matches(&mut self, value: f64, range: bool) -> Result<bool> {
+        self.expect(L_PAREN, "'('")?;
+        let low = self.float_in_parens()?;
+        let matched = if range {
+            self.expect(COMMA, "','")?;
+            let high = self.float_in_parens()?;
+            low <= value && value <= high
+        } else {
+            (value - low).abs() < EPSILON
+        };
+        self.expect(R_PAREN, "')'")?;
+        Ok(matched)
+    }
+
+    /// A `#case` or `#range` met while running a clause: its condition decides whether the
+    /// clause falls through into it.
+    fn case_directive(&mut self, hash: &Token, keyword: &Token) -> Result<()> {
+        let Some(Cond::Switch { value, .. }) = self.conds().last().cloned() else {
+            return Err(self.error_at(keyword, format!("#{} outside #switch", self.text(keyword))));
+        };
+        if self.case_matches(value, keyword.kind == RANGE_KW)? {
+            return Ok(());
+        }
+        let opened = hash.clone();
+        self.next_clause(value, &opened)
+    }
+
+    /// `#break`: leaves the innermost `#switch`, loop or macro.
+    fn break_directive(&mut self, hash: &Token) -> Result<()> {
+        let conds = self.conds().clone();
+        let target = conds.iter().rposition(|c| {
+            matches!(
+                c,
+                Cond::Switch { .. } | Cond::While { .. } | Cond::For { .. }
+            )
+        });
+        match target {
+            Some(index) => {
+                let levels = conds.len() - index;
+                self.conds().truncate(index);
+                for _ in 0..levels {
+                    self.skip_block(false, hash)?;
+                }
+                Ok(())
+            }
+            None if matches!(
+                self.frames.last().map(|f| &f.kind),
+                Some(FrameKind::Macro { .. })
+            ) =>
+            {
+                if !conds.is_empty() {
+                    self.conds().clear();
+                }
+                self.pop_frame()
+            }
+            None => Err(self.error_at(hash, "#break outside #switch, #while, #for or #macro")),
+        }
+    }
+
+    fn end_directive(&mut self, hash: &Token) -> Result<()> {
+        match self.conds().pop() {
+            Some(Cond::If { .. }) | Some(Cond::Switch { .. }) => Ok(()),
+            Some(Cond::While {
+                cond_pos,
+                opened_at,
+            }) => {
+                self.count_iteration(hash, opened_at)?;
+                self.seek(cond_pos);
+                self.loop_test(cond_pos, hash, opened_at)
+            }
+            Some(Cond::For {
+                name,
+                end,
+                step,
+                body_pos,
+                opened_at,
+            }) => {
+                self.count_iteration(hash, opened_at)?;
+                let current = match self.lookup(&name).map(|slot| slot.borrow().clone()) {
+                    Some(Value::Float(v)) => v,
+                    _ => {
+                        return Err(self.error_at(
+                            hash,
+                            format!("the #for variable '{name}' is no longer a float"),
+                        ));
+                    }
+                };
+                let next = current + step;
+                self.declare_local(&name, Value::Float(next));
+                if for_continues(next, end, step) {
+                    self.seek(body_pos);
+                    self.conds().push(Cond::For {
+                        name,
+                        end,
+                        step,
+                        body_pos,
+                        opened_at,
+                    });
+                }
+                Ok(())
+            }
+            None => Err(self.error_at(
+                hash,
+                "#end without a matching #if, #while, #for, #switch or #macro",
+            )),
+        }
+    }
+
+    fn include(&mut self) -> Result<()> {
+        let at = self.next()?;
+        self.unget(at.clone());
+        let name = self.string()?;
+        let Some(file) = self.load(&name) else {
+            let mut available = self.source.names();
+            available.retain(|n| n != &self.files[0].name);
+            let list = if available.is_empty() {
+                "none".to_owned()
+            } else {
+                available.join(", ")
+            };
+            let mut error = self.error_at(&at, format!("cannot find include file '{name}'"));
+            error.notes.push(format!("files available: {list}"));
+            error.notes.push(format!(
+                "standard includes: {}",
+                crate::stdinc::names().collect::<Vec<_>>().join(", ")
+            ));
+            return Err(error);
+        };
+        if let Some(position) = self.include_stack.iter().position(|&f| f == file) {
+            let chain: Vec<&str> = self.include_stack[position..]
+                .iter()
+                .map(|&f| self.files[f as usize].name.as_str())
+                .chain(std::iter::once(name.as_str()))
+                .collect();
+            return Err(self.error_at(&at, format!("include cycle: {}", chain.join(" -> "))));
+        }
+        if self.include_stack.len() > self.options.budgets.include_depth {
+            return Err(self.budget_error(
+                format!(
+                    "includes nested more than {} deep",
+                    self.options.budgets.include_depth
+                ),
+                "max-include-depth",
+            ));
+        }
+        self.lex_error(file)?;
+        let end = self.files[file as usize].tokens.len();
+        self.include_stack.push(file);
+        self.scopes.push(HashMap::new());
+        self.push_frame(Frame {
+            file,
+            pos: 0,
+            end,
+            kind: FrameKind::Include,
+            conds: Vec::new(),
+            entered_at: Some(self.span(&at)),
+        });
+        Ok(())
+    }
+}
+
+/// The shape of an array initializer and its values in row-major order.
+struct Initializer {
+    shape: Vec<usize>,
+    values: Vec<Value>,
+}
+
+fn for_continues(value: f64, end: f64, step: f64) -> bool {
+    if step > 0.0 {
+        value <= end + EPSILON
+    } else {
+        value >= end - EPSILON
+    }
+}
+
+fn same_kind(a: &Value, b: &Value) -> bool {
+    let numeric = |v: &Value| v.is_numeric();
+    (numeric(a) && numeric(b)) || std::mem::discriminant(a) == std::mem::discriminant(b)
+}
+
+trait WithNote {
+    fn with_note_boxed(self, note: &str) -> Self;
+}
+
+impl WithNote for Box<syntax::Diagnostic> {
+    fn with_note_boxed(mut self, note: &str) -> Self {
+        self.notes.push(note.to_owned());
+        self
+    }
+}

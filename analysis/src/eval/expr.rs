@@ -1,0 +1,629 @@
+//! Expressions: POV-Ray's float, vector, colour and string expressions, with its
+//! precedence and its rule that relational, logical and conditional operators only appear
+//! inside parentheses (which is what lets `>` close a vector literal).
+
+use super::tokens::Token;
+use super::value::{Terms, Value};
+use super::{Evaluator, Result};
+use syntax::SyntaxKind::*;
+
+/// Comparison tolerance of `=` and `!=`, as POV-Ray's EPSILON.
+pub const EPSILON: f64 = 1.0e-10;
+
+#[derive(Debug, Clone, Copy)]
+enum BinOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+}
+
+impl Evaluator<'_> {
+    /// An expression outside parentheses: arithmetic only.
+    pub fn expression(&mut self) -> Result<Value> {
+        let first = self.next()?;
+        self.unget(first.clone());
+        let value = self.additive()?;
+        Ok(self.colour_guess(&first, value))
+    }
+
+    /// A float expression.
+    pub fn float(&mut self) -> Result<f64> {
+        let first = self.next()?;
+        self.unget(first.clone());
+        let value = self.additive()?;
+        self.to_float(&first, value)
+    }
+
+    /// A float expression truncated to an integer, as POV-Ray's "I" parameters are.
+    pub fn int(&mut self) -> Result<i64> {
+        Ok(self.float()?.trunc() as i64)
+    }
+
+    /// A 3-component vector; a float is promoted to all three.
+    pub fn vector(&mut self) -> Result<glam::DVec3> {
+        Ok(self.vector_of(3)?.vec3())
+    }
+
+    /// A vector of exactly `len` components: shorter vectors are padded with zeros, a float
+    /// fills every component, longer vectors are an error.
+    pub fn vector_of(&mut self, len: u8) -> Result<Terms> {
+        let first = self.next()?;
+        self.unget(first.clone());
+        let value = self.additive()?;
+        match value {
+            Value::Float(v) => Ok(Terms::splat(v, len)),
+            Value::Vector(t) | Value::Colour(t) if t.len <= len || len >= 3 => Ok(Terms {
+                len,
+                ..t.promoted(len)
+            }),
+            other => Err(self.error_at(
+                &first,
+                format!(
+                    "expected a vector of {len} components, found {}",
+                    other.type_name()
+                ),
+            )),
+        }
+    }
+
+    /// A string expression: a literal, a string function call or a string identifier. It
+    /// reads no token past its end (there are no string operators), so that a directive
+    /// right after `#debug "..."` runs after the message, not before.
+    pub fn string(&mut self) -> Result<String> {
+        let first = self.next()?;
+        let value = match first.kind {
+            IDENT
+                if first.slot.as_ref().is_some_and(|s| {
+                    !matches!(&*s.borrow(), Value::Array(_) | Value::Dictionary(_))
+                }) =>
+            {
+                first
+                    .slot
+                    .as_ref()
+                    .map(|s| s.borrow().clone())
+                    .unwrap_or(Value::Float(0.0))
+            }
+            IDENT | L_PAREN => {
+                self.unget(first.clone());
+                self.postfix()?
+            }
+            _ => {
+                self.unget(first.clone());
+                self.primary()?
+            }
+        };
+        match value {
+            Value::String(s) => Ok(s.to_string()),
+            other => Err(self.error_at(
+                &first,
+                format!("expected a string, found {}", other.type_name()),
+            )),
+        }
+    }
+
+    /// A parenthesised condition, as `#if (...)` and `#while (...)` take.
+    pub fn condition(&mut self) -> Result<bool> {
+        self.expect(L_PAREN, "'('")?;
+        let first = self.next()?;
+        self.unget(first.clone());
+        let value = self.full_expression()?;
+        self.expect(R_PAREN, "')'")?;
+        Ok(self.to_float(&first, value)? != 0.0)
+    }
+
+    pub fn to_float(&self, at: &Token, value: Value) -> Result<f64> {
+        match value {
+            Value::Float(v) => Ok(v),
+            other => {
+                Err(self.error_at(at, format!("expected a float, found {}", other.type_name())))
+            }
+        }
+    }
+
+    /// POV-Ray decides an expression is a colour from its first token: a colour
+    /// identifier or colour keyword makes the whole value a colour.
+    fn colour_guess(&self, first: &Token, value: Value) -> Value {
+        let starts_colour = match first.kind {
+            COLOR_KW | COLOUR_KW | RGB_KW | RGBF_KW | RGBT_KW | RGBFT_KW | SRGB_KW | SRGBF_KW
+            | SRGBT_KW | SRGBFT_KW | RED_KW | GREEN_KW | BLUE_KW | FILTER_KW | TRANSMIT_KW => true,
+            IDENT => first
+                .slot
+                .as_ref()
+                .is_some_and(|slot| matches!(&*slot.borrow(), Value::Colour(_))),
+            _ => false,
+        };
+        match value {
+            Value::Float(v) if starts_colour => Value::Colour(Terms::splat(v, 5)),
+            Value::Vector(t) if starts_colour => Value::Colour(t.promoted(5)),
+            other => other,
+        }
+    }
+
+    /// Inside parentheses: `C ? A : B`, logical and relational operators too.
+    pub fn full_expression(&mut self) -> Result<Value> {
+        let first = self.next()?;
+        self.unget(first.clone());
+        let condition = self.logical()?;
+        if self.eat(QUESTION)? {
+            let truth = self.to_float(&first, condition)? != 0.0;
+            let a = self.full_expression()?;
+            self.expect(COLON, "':'")?;
+            let b = self.full_expression()?;
+            return Ok(if truth { a } else { b });
+        }
+        Ok(condition)
+    }
+
+    fn logical(&mut self) -> Result<Value> {
+        let first = self.next()?;
+        self.unget(first.clone());
+        let mut left = self.relational()?;
+        loop {
+            let op = self.next()?;
+            if !matches!(op.kind, AMP | PIPE) {
+                self.unget(op);
+                return Ok(left);
+            }
+            let right_first = self.next()?;
+            self.unget(right_first.clone());
+            let right = self.relational()?;
+            let a = self.to_float(&first, left)? != 0.0;
+            let b = self.to_float(&right_first, right)? != 0.0;
+            left = Value::Float(f64::from(u8::from(if op.kind == AMP {
+                a && b
+            } else {
+                a || b
+            })));
+        }
+    }
+
+    fn relational(&mut self) -> Result<Value> {
+        let first = self.next()?;
+        self.unget(first.clone());
+        let mut left = self.additive()?;
+        loop {
+            let op = self.next()?;
+            if !matches!(op.kind, LT | LT_EQ | EQ | NEQ | GT_EQ | GT) {
+                self.unget(op);
+                return Ok(left);
+            }
+            let right = self.additive()?;
+            let ordering = match (&left, &right) {
+                (Value::String(a), Value::String(b)) => (a.as_ref().cmp(b.as_ref()) as i8) as f64,
+                _ => {
+                    let a = self.to_float(&first, left)?;
+                    let b = self.to_float(&op, right)?;
+                    if (a - b).abs() < EPSILON { 0.0 } else { a - b }
+                }
+            };
+            let result = match op.kind {
+                LT => ordering < 0.0,
+                LT_EQ => ordering <= 0.0,
+                EQ => ordering == 0.0,
+                NEQ => ordering != 0.0,
+                GT_EQ => ordering >= 0.0,
+                _ => ordering > 0.0,
+            };
+            left = Value::Float(f64::from(u8::from(result)));
+        }
+    }
+
+    /// `A + B`, `A - B`: the level that vector components and statement arguments use.
+    pub fn additive(&mut self) -> Result<Value> {
+        let mut left = self.multiplicative()?;
+        loop {
+            let op = self.next()?;
+            let bin = match op.kind {
+                PLUS => BinOp::Add,
+                MINUS => BinOp::Sub,
+                _ => {
+                    self.unget(op);
+                    return Ok(left);
+                }
+            };
+            let right = self.multiplicative()?;
+            left = self.binary(&op, bin, left, right)?;
+        }
+    }
+
+    fn multiplicative(&mut self) -> Result<Value> {
+        let mut left = self.unary()?;
+        loop {
+            let op = self.next()?;
+            let bin = match op.kind {
+                STAR => BinOp::Mul,
+                SLASH => BinOp::Div,
+                _ => {
+                    self.unget(op);
+                    return Ok(left);
+                }
+            };
+            let right = self.unary()?;
+            left = self.binary(&op, bin, left, right)?;
+        }
+    }
+
+    fn unary(&mut self) -> Result<Value> {
+        let token = self.next()?;
+        match token.kind {
+            MINUS => {
+                let value = self.unary()?;
+                self.negate(&token, value)
+            }
+            PLUS => self.unary(),
+            BANG => {
+                let value = self.unary()?;
+                Ok(Value::Float(f64::from(u8::from(
+                    self.to_float(&token, value)? == 0.0,
+                ))))
+            }
+            _ => {
+                self.unget(token);
+                self.postfix()
+            }
+        }
+    }
+
+    fn negate(&self, at: &Token, value: Value) -> Result<Value> {
+        match value {
+            Value::Float(v) => Ok(Value::Float(-v)),
+            Value::Vector(mut t) => {
+                t.c.iter_mut().for_each(|c| *c = -*c);
+                Ok(Value::Vector(t))
+            }
+            Value::Colour(mut t) => {
+                t.c.iter_mut().for_each(|c| *c = -*c);
+                Ok(Value::Colour(t))
+            }
+            other => Err(self.error_at(at, format!("cannot negate a {}", other.type_name()))),
+        }
+    }
+
+    fn binary(&self, op: &Token, bin: BinOp, left: Value, right: Value) -> Result<Value> {
+        if let (BinOp::Add, Value::String(_), Value::String(_)) = (bin, &left, &right) {
+            return Err(self.error_at(op, "strings are joined with concat(), not '+'"));
+        }
+        let (Some(a), Some(b)) = (left.terms(), right.terms()) else {
+            let culprit = if left.is_numeric() { &right } else { &left };
+            return Err(self.error_at(
+                op,
+                format!(
+                    "expected a float, vector or color operand, found {}",
+                    culprit.type_name()
+                ),
+            ));
+        };
+        let colour = matches!(left, Value::Colour(_)) || matches!(right, Value::Colour(_));
+        let len = a.len.max(b.len).max(if colour { 5 } else { 1 });
+        let a = if a.len == 1 {
+            Terms::splat(a.c[0], len)
+        } else {
+            a.promoted(len)
+        };
+        let b = if b.len == 1 {
+            Terms::splat(b.c[0], len)
+        } else {
+            b.promoted(len)
+        };
+        let mut out = Terms { len, c: [0.0; 5] };
+        for i in 0..len as usize {
+            out.c[i] = match bin {
+                BinOp::Add => a.c[i] + b.c[i],
+                BinOp::Sub => a.c[i] - b.c[i],
+                BinOp::Mul => a.c[i] * b.c[i],
+                BinOp::Div => {
+                    if b.c[i] == 0.0 {
+                        return Err(self.error_at(op, "division by zero"));
+                    }
+                    a.c[i] / b.c[i]
+                }
+            };
+        }
+        Ok(match (colour, len) {
+            (true, _) => Value::Colour(out),
+            (false, 1) => Value::Float(out.c[0]),
+            (false, _) => Value::Vector(out),
+        })
+    }
+
+    /// A primary followed by dot items (`.x`, `.red`, `.hf`) and subscripts.
+    fn postfix(&mut self) -> Result<Value> {
+        let first = self.next()?;
+        self.unget(first.clone());
+        let mut value = self.primary()?;
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                DOT => {
+                    let item = self.next()?;
+                    value = self.dot_item(&item, value)?;
+                }
+                L_BRACK if matches!(value, Value::Array(_) | Value::Dictionary(_)) => {
+                    value = self.subscript(&token, value)?;
+                }
+                _ => {
+                    self.unget(token);
+                    return Ok(value);
+                }
+            }
+        }
+    }
+
+    fn dot_item(&mut self, item: &Token, value: Value) -> Result<Value> {
+        if let Value::Dictionary(dict) = &value {
+            let key = self.text(item).to_owned();
+            return dict.get(&key).cloned().ok_or_else(|| {
+                self.error_at(item, format!("the dictionary has no key \"{key}\""))
+            });
+        }
+        let Some(terms) = value.terms() else {
+            return Err(self.error_at(
+                item,
+                format!("a {} has no '.{}'", value.type_name(), self.text(item)),
+            ));
+        };
+        let index = match item.kind {
+            X_KW | U_KW | RED_KW => 0,
+            Y_KW | V_KW | GREEN_KW => 1,
+            Z_KW | BLUE_KW => 2,
+            T_KW => 3,
+            FILTER_KW => 3,
+            TRANSMIT_KW => 4,
+            GRAY_KW => {
+                let [r, g, b, ..] = terms.promoted(3).c;
+                return Ok(Value::Float(r * 0.297 + g * 0.589 + b * 0.114));
+            }
+            IDENT if self.text(item) == "hf" => {
+                let [r, g, ..] = terms.promoted(3).c;
+                return Ok(Value::Float(r + g / 256.0));
+            }
+            _ => {
+                return Err(self.error_at(item, format!("unknown dot item '.{}'", self.text(item))));
+            }
+        };
+        if matches!(item.kind, T_KW) && matches!(value, Value::Colour(_)) {
+            return Ok(Value::Float(terms.c[4]));
+        }
+        let len = if matches!(value, Value::Float(_)) {
+            1
+        } else {
+            terms.len as usize
+        };
+        if index >= len && !matches!(value, Value::Float(_)) {
+            return Err(self.error_at(
+                item,
+                format!(
+                    "'.{}' needs a vector of at least {} components",
+                    self.text(item),
+                    index + 1
+                ),
+            ));
+        }
+        Ok(Value::Float(if matches!(value, Value::Float(_)) {
+            terms.c[0]
+        } else {
+            terms.c[index]
+        }))
+    }
+
+    /// `Array[i]...` or `Dict["key"]`, after the `[`.
+    fn subscript(&mut self, open: &Token, value: Value) -> Result<Value> {
+        match value {
+            Value::Dictionary(dict) => {
+                let key = self.string()?;
+                self.expect(R_BRACK, "']'")?;
+                dict.get(&key).cloned().ok_or_else(|| {
+                    self.error_at(open, format!("the dictionary has no key \"{key}\""))
+                })
+            }
+            Value::Array(array) => {
+                let mut indices = vec![self.array_index(open)?];
+                self.expect(R_BRACK, "']'")?;
+                while indices.len() < array.dims.len() {
+                    let open = self.expect(L_BRACK, "'[' for the next array dimension")?;
+                    indices.push(self.array_index(&open)?);
+                    self.expect(R_BRACK, "']'")?;
+                }
+                let flat = self.flat_index(open, &array.dims, &indices)?;
+                array.items[flat].clone().ok_or_else(|| {
+                    self.error_at(
+                        open,
+                        format!("array element {indices:?} is used before it was set"),
+                    )
+                })
+            }
+            other => Err(self.error_at(
+                open,
+                format!("a {} cannot be subscripted", other.type_name()),
+            )),
+        }
+    }
+
+    pub fn array_index(&mut self, at: &Token) -> Result<i64> {
+        let v = self.float()?;
+        if !v.is_finite() {
+            return Err(self.error_at(at, "array index is not a finite number"));
+        }
+        Ok(v.trunc() as i64)
+    }
+
+    /// The position of an element in an array's flat storage, with POV-Ray's bounds check.
+    pub fn flat_index(&self, at: &Token, dims: &[usize], indices: &[i64]) -> Result<usize> {
+        let mut flat = 0usize;
+        for (&index, &size) in indices.iter().zip(dims) {
+            if index < 0 || index as usize >= size {
+                return Err(self.error_at(
+                    at,
+                    format!("array index {index} out of range: this dimension has {size} elements (0 to {})", size as i64 - 1),
+                ));
+            }
+            flat = flat * size + index as usize;
+        }
+        Ok(flat)
+    }
+
+    /// Literals, parentheses, vectors, identifiers, built-in constants and functions.
+    fn primary(&mut self) -> Result<Value> {
+        let token = self.next()?;
+        match token.kind {
+            NUMBER => {
+                let text = self.text(&token);
+                text.parse::<f64>()
+                    .map(Value::Float)
+                    .map_err(|_| self.error_at(&token, format!("malformed number '{text}'")))
+            }
+            STRING => {
+                let (value, problems) = syntax::lexer::unescape_string(self.text(&token));
+                if let Some((range, message)) = problems.into_iter().next() {
+                    let shifted = range + syntax::TextSize::new(token.start);
+                    self.warnings.push(syntax::Diagnostic::warning(
+                        self.files[token.file as usize].name.clone(),
+                        shifted,
+                        message,
+                    ));
+                }
+                Ok(Value::String(value.into()))
+            }
+            L_PAREN => {
+                let value = self.full_expression()?;
+                self.expect(R_PAREN, "')'")?;
+                Ok(value)
+            }
+            LT => self.vector_literal(&token),
+            IDENT => self.identifier_value(token),
+            _ => {
+                if let Some(value) = self.builtin(&token)? {
+                    return Ok(value);
+                }
+                Err(self.error_at(
+                    &token,
+                    format!("expected an expression, found {}", self.describe(&token)),
+                ))
+            }
+        }
+    }
+
+    fn vector_literal(&mut self, open: &Token) -> Result<Value> {
+        let mut components = Vec::with_capacity(5);
+        loop {
+            let at = self.next()?;
+            self.unget(at.clone());
+            let value = self.additive()?;
+            components.push(self.to_float(&at, value)?);
+            let token = self.next()?;
+            match token.kind {
+                COMMA => continue,
+                GT => break,
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected ',' or '>' in vector, found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+        if !(2..=5).contains(&components.len()) {
+            return Err(self.error_at(
+                open,
+                format!("a vector has 2 to 5 components, not {}", components.len()),
+            ));
+        }
+        Ok(Value::Vector(Terms::new(&components)))
+    }
+
+    /// The value of an identifier, calling functions and splines that follow with `(`.
+    fn identifier_value(&mut self, token: Token) -> Result<Value> {
+        let Some(slot) = token.slot.clone() else {
+            return Err(self.undeclared(&token));
+        };
+        let value = slot.borrow().clone();
+        match value {
+            Value::Function(function) if self.peek_kind()? == L_PAREN => {
+                self.call_function(&token, &function)
+            }
+            Value::Spline(spline) if self.peek_kind()? == L_PAREN => {
+                self.call_spline(&token, &spline)
+            }
+            other => Ok(other),
+        }
+    }
+
+    /// "undeclared identifier 'Foo'", with the closest declared name or keyword.
+    pub fn undeclared(&self, token: &Token) -> Box<syntax::Diagnostic> {
+        let name = self.text(token);
+        let mut error = self.error_at(token, format!("undeclared identifier '{name}'"));
+        if let Some(suggestion) = self.suggest(name) {
+            error.notes.push(format!("did you mean '{suggestion}'?"));
+        }
+        error
+    }
+
+    /// The parenthesised, comma-separated arguments of a call, as floats.
+    pub fn float_args(&mut self) -> Result<Vec<f64>> {
+        self.expect(L_PAREN, "'('")?;
+        let mut args = Vec::new();
+        if self.eat(R_PAREN)? {
+            return Ok(args);
+        }
+        loop {
+            args.push(self.float_in_parens()?);
+            let token = self.next()?;
+            match token.kind {
+                COMMA => continue,
+                R_PAREN => return Ok(args),
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected ',' or ')' in argument list, found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+
+    /// A float argument inside a call's parentheses, where the full grammar applies.
+    pub fn float_in_parens(&mut self) -> Result<f64> {
+        let first = self.next()?;
+        self.unget(first.clone());
+        let value = self.full_expression()?;
+        self.to_float(&first, value)
+    }
+
+    /// Any value inside a call's parentheses.
+    pub fn value_in_parens(&mut self) -> Result<Value> {
+        self.full_expression()
+    }
+
+    /// A vector argument inside parentheses, promoted to 3 components.
+    pub fn vector_in_parens(&mut self) -> Result<glam::DVec3> {
+        let first = self.next()?;
+        self.unget(first.clone());
+        match self.full_expression()? {
+            Value::Float(v) => Ok(glam::DVec3::splat(v)),
+            Value::Vector(t) | Value::Colour(t) => Ok(t.promoted(3).vec3()),
+            other => Err(self.error_at(
+                &first,
+                format!("expected a vector, found {}", other.type_name()),
+            )),
+        }
+    }
+
+    pub fn string_in_parens(&mut self) -> Result<String> {
+        let first = self.next()?;
+        self.unget(first.clone());
+        match self.full_expression()? {
+            Value::String(s) => Ok(s.to_string()),
+            other => Err(self.error_at(
+                &first,
+                format!("expected a string, found {}", other.type_name()),
+            )),
+        }
+    }
+}

@@ -1,0 +1,203 @@
+//! `light_source { }` in all its forms.
+
+use super::object::transform_object;
+use super::value::Value;
+use super::{Evaluator, Result};
+use crate::scene::{AreaLight, Light, LightKind, Transform};
+use glam::DVec3;
+use syntax::SyntaxKind::*;
+
+impl Evaluator<'_> {
+    /// A light source statement.
+    pub fn light_source(&mut self) -> Result<Light> {
+        let keyword = self.expect(LIGHT_SOURCE_KW, "'light_source'")?;
+        self.expect(L_BRACE, "'{'")?;
+        let first = self.next()?;
+        let mut light = match first.slot.as_ref().map(|s| s.borrow().clone()) {
+            Some(Value::Light(light)) => Light::clone(&light),
+            _ => {
+                self.unget(first);
+                let position = self.vector()?;
+                self.eat(COMMA)?;
+                let colour = self.scene_colour()?;
+                let mut light = Light::point(position, colour);
+                light.origin = Some(self.span(&keyword));
+                light
+            }
+        };
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => return Ok(light),
+                SPOTLIGHT_KW => {
+                    light.kind = LightKind::Spotlight {
+                        point_at: DVec3::Z,
+                        radius: 30.0,
+                        falloff: 45.0,
+                        tightness: 0.0,
+                    }
+                }
+                CYLINDER_KW => {
+                    light.kind = LightKind::Cylinder {
+                        point_at: DVec3::Z,
+                        radius: 0.75,
+                        falloff: 1.0,
+                        tightness: 0.0,
+                    }
+                }
+                PARALLEL_KW => {
+                    light.kind = LightKind::Parallel {
+                        point_at: DVec3::ZERO,
+                    }
+                }
+                POINT_AT_KW => {
+                    let target = self.vector()?;
+                    match &mut light.kind {
+                        LightKind::Spotlight { point_at, .. }
+                        | LightKind::Cylinder { point_at, .. }
+                        | LightKind::Parallel { point_at } => *point_at = target,
+                        LightKind::Point => {}
+                    }
+                }
+                RADIUS_KW | FALLOFF_KW | TIGHTNESS_KW => {
+                    let value = self.float()?;
+                    if let LightKind::Spotlight {
+                        radius,
+                        falloff,
+                        tightness,
+                        ..
+                    }
+                    | LightKind::Cylinder {
+                        radius,
+                        falloff,
+                        tightness,
+                        ..
+                    } = &mut light.kind
+                    {
+                        match token.kind {
+                            RADIUS_KW => *radius = value,
+                            FALLOFF_KW => *falloff = value,
+                            _ => *tightness = value,
+                        }
+                    }
+                }
+                AREA_LIGHT_KW => {
+                    let axis1 = self.vector()?;
+                    self.eat(COMMA)?;
+                    let axis2 = self.vector()?;
+                    self.eat(COMMA)?;
+                    let size1 = self.int()?.max(1) as u32;
+                    self.eat(COMMA)?;
+                    let size2 = self.int()?.max(1) as u32;
+                    light.area = Some(AreaLight {
+                        axis1,
+                        axis2,
+                        size1,
+                        size2,
+                        adaptive: 0,
+                        jitter: false,
+                        circular: false,
+                        orient: false,
+                    });
+                }
+                ADAPTIVE_KW | JITTER_KW | CIRCULAR_KW | ORIENT_KW => {
+                    let adaptive = if token.kind == ADAPTIVE_KW {
+                        self.int()?.max(0) as u32
+                    } else {
+                        0
+                    };
+                    let on = if token.kind == ADAPTIVE_KW {
+                        true
+                    } else {
+                        self.optional_bool()?
+                    };
+                    let Some(area) = &mut light.area else {
+                        return Err(self.error_at(
+                            &token,
+                            format!("'{}' needs an area_light before it", self.text(&token)),
+                        ));
+                    };
+                    match token.kind {
+                        ADAPTIVE_KW => area.adaptive = adaptive,
+                        JITTER_KW => area.jitter = on,
+                        CIRCULAR_KW => area.circular = on,
+                        _ => area.orient = on,
+                    }
+                }
+                FADE_DISTANCE_KW => light.fade_distance = Some(self.float()?),
+                FADE_POWER_KW => light.fade_power = self.float()?,
+                SHADOWLESS_KW => light.shadowless = true,
+                MEDIA_INTERACTION_KW => light.media_interaction = self.optional_bool()?,
+                MEDIA_ATTENUATION_KW => light.media_attenuation = self.optional_bool()?,
+                AREA_ILLUMINATION_KW => {
+                    self.optional_bool()?;
+                }
+                LOOKS_LIKE_KW | PROJECTED_THROUGH_KW => {
+                    return Err(self.unsupported(&token, self.text(&token)));
+                }
+                PHOTONS_KW => self.light_photons(&mut light)?,
+                kind if Self::starts_transform(kind) => {
+                    let t = self.transformation(&token)?;
+                    transform_light(&mut light, &t);
+                }
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected a light_source item or '}}', found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+
+    fn light_photons(&mut self, light: &mut Light) -> Result<()> {
+        self.expect(L_BRACE, "'{'")?;
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => return Ok(()),
+                REFRACTION_KW => light.photons_refraction = self.optional_bool()?,
+                REFLECTION_KW => light.photons_reflection = self.optional_bool()?,
+                AREA_LIGHT_KW => {
+                    self.optional_bool()?;
+                }
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected refraction, reflection or '}}' in photons, found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+}
+
+/// Moves a light with a transformation.
+pub fn transform_light(light: &mut Light, t: &Transform) {
+    light.position = t.point(light.position);
+    match &mut light.kind {
+        LightKind::Spotlight { point_at, .. }
+        | LightKind::Cylinder { point_at, .. }
+        | LightKind::Parallel { point_at } => {
+            *point_at = t.point(*point_at);
+        }
+        LightKind::Point => {}
+    }
+    if let Some(area) = &mut light.area {
+        area.axis1 = t.vector(area.axis1);
+        area.axis2 = t.vector(area.axis2);
+    }
+    for object in light
+        .looks_like
+        .iter_mut()
+        .chain(light.projected_through.iter_mut())
+    {
+        transform_object(object, t);
+    }
+}

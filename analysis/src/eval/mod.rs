@@ -1,0 +1,390 @@
+//! The evaluator: runs a scene's directives, macros and expressions over its token stream,
+//! the way POV-Ray's parser does, and builds the [`Scene`] it describes.
+//!
+//! POV-Ray stops at the first error, and so do we: an [`Evaluation`] carries at most one
+//! error, located in the file where it happened, plus the warnings and `#debug` text met
+//! before it.
+
+mod builtins;
+mod camera;
+mod colour;
+mod directives;
+mod expr;
+mod function_body;
+mod light;
+mod macros;
+mod object;
+mod rng;
+mod scene_items;
+mod spline;
+mod stream;
+mod symbols;
+mod texture;
+mod tokens;
+mod transform;
+pub mod value;
+
+use crate::files::{FileSource, Sources};
+use crate::scene::{Camera, GlobalSettings, Light, Object, Scene, Texture};
+use crate::stdinc;
+use std::collections::HashMap;
+use std::sync::Arc;
+use syntax::{Diagnostic, TextRange};
+use tokens::{FileId, Frame, FrameKind, SourceFile, Token};
+use value::Slot;
+
+/// Every evaluation error stops the evaluation; boxed to keep results small.
+pub(crate) type Result<T> = std::result::Result<T, Box<Diagnostic>>;
+
+/// Limits that turn runaway scenes into located errors instead of hangs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Budgets {
+    /// Total `#while` and `#for` iterations.
+    pub loop_iterations: u64,
+    /// Nested macro calls.
+    pub macro_depth: usize,
+    /// Nested include files.
+    pub include_depth: usize,
+    /// Tokens read, counting every repetition of a loop body or macro.
+    pub steps: u64,
+    /// Elements of one array.
+    pub array_elements: usize,
+    /// Bytes of one string.
+    pub string_bytes: usize,
+}
+
+impl Default for Budgets {
+    fn default() -> Self {
+        Budgets {
+            loop_iterations: 10_000_000,
+            macro_depth: 1_000,
+            include_depth: 64,
+            steps: 200_000_000,
+            array_elements: 16_000_000,
+            string_bytes: 16 << 20,
+        }
+    }
+}
+
+/// What the scene can ask about its rendering context.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EvalOptions {
+    pub image_width: u32,
+    pub image_height: u32,
+    pub clock: f64,
+    pub frame_number: u32,
+    pub initial_frame: u32,
+    pub final_frame: u32,
+    pub initial_clock: f64,
+    pub final_clock: f64,
+    /// The `#version` in force before the scene sets one (Version=... on the command line).
+    pub version: Option<f64>,
+    pub budgets: Budgets,
+}
+
+impl Default for EvalOptions {
+    fn default() -> Self {
+        EvalOptions {
+            image_width: 800,
+            image_height: 600,
+            clock: 0.0,
+            frame_number: 0,
+            initial_frame: 1,
+            final_frame: 1,
+            initial_clock: 0.0,
+            final_clock: 1.0,
+            version: None,
+            budgets: Budgets::default(),
+        }
+    }
+}
+
+/// The message streams a scene can write to besides errors.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stream {
+    Debug,
+}
+
+/// Text a scene printed with `#debug`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Message {
+    pub stream: Stream,
+    pub text: String,
+}
+
+/// The outcome of evaluating a scene.
+#[derive(Debug, Clone)]
+pub struct Evaluation {
+    /// `None` when evaluation stopped at an error.
+    pub scene: Option<Scene>,
+    /// Warnings in the order met, then the error that stopped evaluation, if any.
+    pub diagnostics: Vec<Diagnostic>,
+    pub messages: Vec<Message>,
+    /// Every file read, so that diagnostics can be rendered with their source lines.
+    pub sources: Sources,
+}
+
+impl Evaluation {
+    pub fn has_errors(&self) -> bool {
+        self.diagnostics.iter().any(Diagnostic::is_error)
+    }
+
+    /// All `#debug` text, concatenated as POV-Ray prints it.
+    pub fn debug_text(&self) -> String {
+        self.messages.iter().map(|m| m.text.as_str()).collect()
+    }
+}
+
+/// Evaluates the scene `main`, reading it and its includes from `files` and then from the
+/// standard includes.
+pub fn evaluate(main: &str, files: &dyn FileSource, options: &EvalOptions) -> Evaluation {
+    let mut evaluator = Evaluator::new(files, options);
+    let outcome = evaluator.run(main);
+    evaluator.finish(outcome)
+}
+
+/// The state of one evaluation.
+pub(crate) struct Evaluator<'a> {
+    source: &'a dyn FileSource,
+    options: &'a EvalOptions,
+    files: Vec<SourceFile>,
+    file_ids: HashMap<String, FileId>,
+    sources: Sources,
+    frames: Vec<Frame>,
+    /// Symbol tables: the global one first, then one per include file and macro call.
+    scopes: Vec<HashMap<String, Slot>>,
+    /// Tokens given back by the parsers, read again before the stream.
+    pushed: Vec<Token>,
+    /// Files being included, innermost last, to catch cycles.
+    include_stack: Vec<FileId>,
+    steps: u64,
+    loop_iterations: u64,
+    macro_depth: usize,
+    version: f64,
+    version_set: bool,
+    warnings: Vec<Diagnostic>,
+    messages: Vec<Message>,
+    rng: rng::RandomStreams,
+    camera: Option<Camera>,
+    lights: Vec<Light>,
+    objects: Vec<Object>,
+    background: Option<crate::scene::Colour>,
+    fogs: Vec<crate::scene::Fog>,
+    sky_spheres: Vec<crate::scene::SkySphere>,
+    settings: GlobalSettings,
+    default_texture: Texture,
+}
+
+impl<'a> Evaluator<'a> {
+    fn new(source: &'a dyn FileSource, options: &'a EvalOptions) -> Self {
+        Evaluator {
+            source,
+            options,
+            files: Vec::new(),
+            file_ids: HashMap::new(),
+            sources: Sources::default(),
+            frames: Vec::new(),
+            scopes: vec![HashMap::new()],
+            pushed: Vec::new(),
+            include_stack: Vec::new(),
+            steps: 0,
+            loop_iterations: 0,
+            macro_depth: 0,
+            version: options.version.unwrap_or(3.7),
+            version_set: options.version.is_some(),
+            warnings: Vec::new(),
+            messages: Vec::new(),
+            rng: rng::RandomStreams::default(),
+            camera: None,
+            lights: Vec::new(),
+            objects: Vec::new(),
+            background: None,
+            fogs: Vec::new(),
+            sky_spheres: Vec::new(),
+            settings: GlobalSettings::default(),
+            default_texture: Texture::default(),
+        }
+    }
+
+    fn run(&mut self, main: &str) -> Result<()> {
+        let Some(file) = self.load(main) else {
+            return Err(Box::new(Diagnostic::error(
+                main,
+                TextRange::default(),
+                format!("cannot read '{main}'"),
+            )));
+        };
+        self.lex_error(file)?;
+        let end = self.files[file as usize].tokens.len();
+        self.include_stack.push(file);
+        self.push_frame(Frame {
+            file,
+            pos: 0,
+            end,
+            kind: FrameKind::Main,
+            conds: Vec::new(),
+            entered_at: None,
+        });
+        self.statements_until_eof()?;
+        if !self.version_set {
+            let range = TextRange::default();
+            self.warnings.push(
+                Diagnostic::warning(
+                    main,
+                    range,
+                    "this scene has no #version directive; assuming #version 3.7",
+                )
+                .with_note("add `#version 3.7;` as the scene's first line"),
+            );
+        }
+        Ok(())
+    }
+
+    /// Loads a file once, by name: the caller's files first, then the standard includes.
+    fn load(&mut self, name: &str) -> Option<FileId> {
+        if let Some(&id) = self.file_ids.get(name) {
+            return Some(id);
+        }
+        let text: Arc<str> = match self.source.read(name) {
+            Some(text) => text,
+            None => Arc::from(stdinc::get(name)?),
+        };
+        let id = self.files.len() as FileId;
+        self.sources.insert(name, text.clone());
+        self.files.push(SourceFile::new(name.to_owned(), text));
+        self.file_ids.insert(name.to_owned(), id);
+        Some(id)
+    }
+
+    fn finish(mut self, outcome: Result<()>) -> Evaluation {
+        let mut diagnostics = std::mem::take(&mut self.warnings);
+        let scene = match outcome {
+            Ok(()) => Some(self.take_scene()),
+            Err(mut error) => {
+                self.add_context(&mut error);
+                diagnostics.push(*error);
+                None
+            }
+        };
+        Evaluation {
+            scene,
+            diagnostics,
+            messages: self.messages,
+            sources: self.sources,
+        }
+    }
+
+    /// Notes where the failing include file was included and the failing macro called.
+    fn add_context(&self, error: &mut Diagnostic) {
+        for frame in self.frames.iter().rev() {
+            let Some(span) = &frame.entered_at else {
+                continue;
+            };
+            let message = match &frame.kind {
+                FrameKind::Macro { name } => format!("in macro '{name}' called here"),
+                FrameKind::Include => format!(
+                    "in '{}' included here",
+                    self.files[frame.file as usize].name
+                ),
+                FrameKind::Main => continue,
+            };
+            error.related.push(syntax::Related {
+                span: span.clone(),
+                message,
+            });
+        }
+    }
+
+    /// The first lexical error of a freshly loaded file, as an evaluation error.
+    fn lex_error(&self, file: FileId) -> Result<()> {
+        match self.files[file as usize].lex_errors.first() {
+            Some(error) => Err(self.error_in(file, error.range, error.message.clone())),
+            None => Ok(()),
+        }
+    }
+
+    fn take_scene(&mut self) -> Scene {
+        let mut objects = std::mem::take(&mut self.objects);
+        let default = Arc::new(self.default_texture.clone());
+        for object in &mut objects {
+            object::inherit_texture(object, &default);
+        }
+        Scene {
+            camera: self.camera.take().unwrap_or_default(),
+            lights: std::mem::take(&mut self.lights),
+            objects,
+            background: self.background,
+            fogs: std::mem::take(&mut self.fogs),
+            sky_spheres: std::mem::take(&mut self.sky_spheres),
+            settings: self.settings.clone(),
+            version: self.version_set.then_some(self.version),
+        }
+    }
+
+    /// Counts one unit of work against the step budget.
+    fn spend_step(&mut self) -> Result<()> {
+        self.steps += 1;
+        if self.steps > self.options.budgets.steps {
+            return Err(self.budget_error(
+                format!(
+                    "evaluation step budget of {} exceeded",
+                    self.options.budgets.steps
+                ),
+                "max-steps",
+            ));
+        }
+        Ok(())
+    }
+
+    fn budget_error(&self, message: String, option: &str) -> Box<Diagnostic> {
+        let frame = self.frames.last().expect("budgets are spent while reading");
+        let file = &self.files[frame.file as usize];
+        let at = frame
+            .pos
+            .saturating_sub(1)
+            .min(file.tokens.len().saturating_sub(1));
+        let range = file.tokens.get(at).map_or(TextRange::default(), |t| {
+            TextRange::new(t.start.into(), t.end.into())
+        });
+        Box::new(
+            Diagnostic::error(file.name.clone(), range, message).with_note(format!(
+                "raise the limit with the `{option}` option if the scene really needs more"
+            )),
+        )
+    }
+
+    /// An error at a token.
+    pub(crate) fn error_at(&self, token: &Token, message: impl Into<String>) -> Box<Diagnostic> {
+        self.error_in(token.file, token.range(), message)
+    }
+
+    pub(crate) fn error_in(
+        &self,
+        file: FileId,
+        range: TextRange,
+        message: impl Into<String>,
+    ) -> Box<Diagnostic> {
+        Box::new(Diagnostic::error(
+            self.files[file as usize].name.clone(),
+            range,
+            message,
+        ))
+    }
+
+    pub(crate) fn warn_at(&mut self, token: &Token, message: impl Into<String>) {
+        let diagnostic = Diagnostic::warning(
+            self.files[token.file as usize].name.clone(),
+            token.range(),
+            message,
+        );
+        self.warnings.push(diagnostic);
+    }
+
+    /// An error for a feature we do not render yet.
+    pub(crate) fn unsupported(&self, token: &Token, feature: &str) -> Box<Diagnostic> {
+        self.error_at(token, format!("not supported yet: {feature}"))
+    }
+}
+
+#[cfg(test)]
+mod tests;

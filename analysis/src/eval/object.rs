@@ -1,0 +1,567 @@
+//! Object statements: the shapes, CSG, `object { }` references, and the modifiers every
+//! object takes (transformations, textures, flags, clipping and bounding).
+
+use super::tokens::Token;
+use super::value::Value;
+use super::{Evaluator, Result};
+use crate::scene::{CsgOp, Interior, Light, Object, Shape, Texture, Transform};
+use glam::DVec3;
+use std::sync::Arc;
+use syntax::SyntaxKind::{self, *};
+
+/// Shapes we parse the name of but cannot draw yet; they fail with a located error.
+const UNSUPPORTED_SHAPES: &[SyntaxKind] = &[
+    BICUBIC_PATCH_KW,
+    BLOB_KW,
+    CUBIC_KW,
+    HEIGHT_FIELD_KW,
+    ISOSURFACE_KW,
+    JULIA_FRACTAL_KW,
+    LATHE_KW,
+    LEMON_KW,
+    MESH_KW,
+    MESH2_KW,
+    OVUS_KW,
+    PARAMETRIC_KW,
+    POLY_KW,
+    POLYGON_KW,
+    POLYNOMIAL_KW,
+    PRISM_KW,
+    QUADRIC_KW,
+    QUARTIC_KW,
+    SOR_KW,
+    SPHERE_SWEEP_KW,
+    SUPERELLIPSOID_KW,
+    TEXT_KW,
+];
+
+impl Evaluator<'_> {
+    /// Whether `kind` starts an object statement.
+    pub fn starts_object(kind: SyntaxKind) -> bool {
+        matches!(
+            kind,
+            SPHERE_KW
+                | BOX_KW
+                | CYLINDER_KW
+                | CONE_KW
+                | PLANE_KW
+                | TORUS_KW
+                | DISC_KW
+                | TRIANGLE_KW
+                | SMOOTH_TRIANGLE_KW
+                | UNION_KW
+                | INTERSECTION_KW
+                | DIFFERENCE_KW
+                | MERGE_KW
+                | OBJECT_KW
+        ) || UNSUPPORTED_SHAPES.contains(&kind)
+    }
+
+    /// One object statement, from its keyword to its closing brace.
+    pub fn object(&mut self) -> Result<Object> {
+        let keyword = self.next()?;
+        let open = self.expect(L_BRACE, "'{'")?;
+        let origin = Some(self.span(&keyword));
+        let mut object = match keyword.kind {
+            SPHERE_KW => {
+                let center = self.vector()?;
+                self.eat(COMMA)?;
+                let radius = self.float()?;
+                Object::new(Shape::Sphere { center, radius }, origin)
+            }
+            BOX_KW => {
+                let corner1 = self.vector()?;
+                self.eat(COMMA)?;
+                let corner2 = self.vector()?;
+                Object::new(Shape::Box { corner1, corner2 }, origin)
+            }
+            CYLINDER_KW => {
+                let base = self.vector()?;
+                self.eat(COMMA)?;
+                let cap = self.vector()?;
+                self.eat(COMMA)?;
+                let radius = self.float()?;
+                if (cap - base).length() == 0.0 {
+                    return Err(self.error_at(
+                        &keyword,
+                        "degenerate cylinder: base and cap are the same point",
+                    ));
+                }
+                Object::new(
+                    Shape::Cylinder {
+                        base,
+                        cap,
+                        radius,
+                        open: false,
+                    },
+                    origin,
+                )
+            }
+            CONE_KW => {
+                let base = self.vector()?;
+                self.eat(COMMA)?;
+                let base_radius = self.float()?;
+                self.eat(COMMA)?;
+                let cap = self.vector()?;
+                self.eat(COMMA)?;
+                let cap_radius = self.float()?;
+                if (cap - base).length() == 0.0 {
+                    return Err(
+                        self.error_at(&keyword, "degenerate cone: base and cap are the same point")
+                    );
+                }
+                Object::new(
+                    Shape::Cone {
+                        base,
+                        base_radius,
+                        cap,
+                        cap_radius,
+                        open: false,
+                    },
+                    origin,
+                )
+            }
+            PLANE_KW => {
+                let normal = self.vector()?;
+                self.eat(COMMA)?;
+                let distance = self.float()?;
+                if normal.length() == 0.0 {
+                    return Err(self.error_at(&keyword, "degenerate plane: the normal is zero"));
+                }
+                Object::new(Shape::Plane { normal, distance }, origin)
+            }
+            TORUS_KW => {
+                let major = self.float()?;
+                self.eat(COMMA)?;
+                let minor = self.float()?;
+                Object::new(
+                    Shape::Torus {
+                        major,
+                        minor,
+                        sturm: false,
+                    },
+                    origin,
+                )
+            }
+            DISC_KW => {
+                let center = self.vector()?;
+                self.eat(COMMA)?;
+                let normal = self.vector()?;
+                self.eat(COMMA)?;
+                let radius = self.float()?;
+                let hole_radius = if self.eat(COMMA)? { self.float()? } else { 0.0 };
+                Object::new(
+                    Shape::Disc {
+                        center,
+                        normal,
+                        radius,
+                        hole_radius,
+                    },
+                    origin,
+                )
+            }
+            TRIANGLE_KW => {
+                let a = self.vector()?;
+                self.eat(COMMA)?;
+                let b = self.vector()?;
+                self.eat(COMMA)?;
+                let c = self.vector()?;
+                Object::new(Shape::Triangle { corners: [a, b, c] }, origin)
+            }
+            SMOOTH_TRIANGLE_KW => {
+                let mut corners = [DVec3::ZERO; 3];
+                let mut normals = [DVec3::ZERO; 3];
+                for i in 0..3 {
+                    if i > 0 {
+                        self.eat(COMMA)?;
+                    }
+                    corners[i] = self.vector()?;
+                    self.eat(COMMA)?;
+                    normals[i] = self.vector()?;
+                }
+                Object::new(Shape::SmoothTriangle { corners, normals }, origin)
+            }
+            UNION_KW | MERGE_KW | INTERSECTION_KW | DIFFERENCE_KW => {
+                let op = match keyword.kind {
+                    UNION_KW => CsgOp::Union,
+                    MERGE_KW => CsgOp::Merge,
+                    INTERSECTION_KW => CsgOp::Intersection,
+                    _ => CsgOp::Difference,
+                };
+                self.csg_children(op, origin)?
+            }
+            OBJECT_KW => {
+                let token = self.next()?;
+                if Self::starts_object(token.kind) {
+                    self.unget(token);
+                    self.object()?
+                } else {
+                    match token.slot.as_ref().map(|s| s.borrow().clone()) {
+                        Some(Value::Object(object)) => Object::clone(&object),
+                        Some(other) => {
+                            return Err(self.error_at(
+                                &token,
+                                format!("expected an object, found {}", other.type_name()),
+                            ));
+                        }
+                        None if token.kind == IDENT => return Err(self.undeclared(&token)),
+                        None => {
+                            return Err(self.error_at(
+                                &token,
+                                format!(
+                                    "expected an object identifier, found {}",
+                                    self.describe(&token)
+                                ),
+                            ));
+                        }
+                    }
+                }
+            }
+            kind if UNSUPPORTED_SHAPES.contains(&kind) => {
+                return Err(self.unsupported(&keyword, self.text(&keyword)));
+            }
+            _ => {
+                return Err(self.error_at(
+                    &keyword,
+                    format!("expected an object, found {}", self.describe(&keyword)),
+                ));
+            }
+        };
+        self.object_modifiers(&mut object, &keyword)?;
+        let close = self.next()?;
+        if close.kind != R_BRACE {
+            let mut error = self.error_at(
+                &close,
+                format!(
+                    "expected an object modifier or '}}' in {}, found {}",
+                    self.text(&keyword),
+                    self.describe(&close)
+                ),
+            );
+            error.related.push(syntax::Related {
+                span: self.span(&open),
+                message: "the object starts here".into(),
+            });
+            return Err(error);
+        }
+        Ok(object)
+    }
+
+    fn csg_children(&mut self, op: CsgOp, origin: crate::scene::Origin) -> Result<Object> {
+        let mut children = Vec::new();
+        let mut lights = Vec::new();
+        loop {
+            let token = self.next()?;
+            if Self::starts_object(token.kind) {
+                self.unget(token);
+                children.push(self.object()?);
+            } else if token.kind == LIGHT_SOURCE_KW {
+                self.unget(token);
+                lights.push(self.light_source()?);
+            } else {
+                self.unget(token);
+                break;
+            }
+        }
+        Ok(Object::new(
+            Shape::Csg {
+                op,
+                children,
+                lights,
+            },
+            origin,
+        ))
+    }
+
+    /// The modifiers after a shape's parameters, up to (not including) the closing brace.
+    fn object_modifiers(&mut self, object: &mut Object, keyword: &Token) -> Result<()> {
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                kind if Self::starts_transform(kind) => {
+                    let t = self.transformation(&token)?;
+                    transform_object(object, &t);
+                }
+                TEXTURE_KW => {
+                    let texture = self.texture_body()?;
+                    object.texture = Some(Arc::new(match object.texture.take() {
+                        Some(below) => layer(Texture::clone(&below), texture),
+                        None => texture,
+                    }));
+                }
+                PIGMENT_KW | NORMAL_KW | FINISH_KW => self.texture_part(object, &token)?,
+                INTERIOR_KW => {
+                    let interior = self.interior_body()?;
+                    object.interior = Some(Arc::new(interior));
+                }
+                INTERIOR_TEXTURE_KW => {
+                    let texture = self.texture_body()?;
+                    object.interior_texture = Some(Arc::new(texture));
+                }
+                MATERIAL_KW => self.material(object)?,
+                NO_SHADOW_KW => object.flags.no_shadow = self.optional_bool()?,
+                NO_IMAGE_KW => object.flags.no_image = self.optional_bool()?,
+                NO_REFLECTION_KW => object.flags.no_reflection = self.optional_bool()?,
+                NO_RADIOSITY_KW => object.flags.no_radiosity = self.optional_bool()?,
+                DOUBLE_ILLUMINATE_KW => object.flags.double_illuminate = self.optional_bool()?,
+                HOLLOW_KW => object.flags.hollow = Some(self.optional_bool()?),
+                INVERSE_KW => object.flags.inverse = !object.flags.inverse,
+                STURM_KW => {
+                    let on = self.optional_bool()?;
+                    if let Shape::Torus { sturm, .. } = &mut object.shape {
+                        *sturm = on;
+                    }
+                }
+                OPEN_KW => match &mut object.shape {
+                    Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => {
+                        *open = self.optional_bool()?
+                    }
+                    _ => {
+                        return Err(self.error_at(
+                            &token,
+                            format!("'open' does not apply to {}", self.text(keyword)),
+                        ));
+                    }
+                },
+                CLIPPED_BY_KW | BOUNDED_BY_KW => {
+                    let list = self.object_list(&token)?;
+                    if token.kind == CLIPPED_BY_KW {
+                        object.clipped_by = list;
+                    } else {
+                        object.bounded_by = list;
+                    }
+                }
+                PHOTONS_KW => self.skip_braced_block(&token)?,
+                RADIOSITY_KW => self.skip_braced_block(&token)?,
+                SPLIT_UNION_KW | CUTAWAY_TEXTURES_KW | UV_MAPPING_KW => {
+                    if token.kind == SPLIT_UNION_KW {
+                        self.optional_bool()?;
+                    }
+                }
+                _ => {
+                    self.unget(token);
+                    return Ok(());
+                }
+            }
+        }
+    }
+
+    /// `pigment { }`, `normal { }` or `finish { }` applied to an object: they modify the
+    /// object's own plain texture, which starts as a copy of the default texture.
+    fn texture_part(&mut self, object: &mut Object, keyword: &Token) -> Result<()> {
+        let mut texture = match object.texture.take() {
+            Some(texture) => Texture::clone(&texture),
+            None => self.default_texture.clone(),
+        };
+        let Texture::Plain {
+            pigment,
+            normal,
+            finish,
+        } = &mut texture
+        else {
+            return Err(self.error_at(
+                keyword,
+                format!(
+                    "cannot add a {} to a patterned or layered texture; put it inside the texture",
+                    self.text(keyword)
+                ),
+            ));
+        };
+        match keyword.kind {
+            PIGMENT_KW => *pigment = self.pigment_with(Some(pigment.clone()))?,
+            NORMAL_KW => *normal = Some(self.normal_with(normal.clone())?),
+            _ => *finish = Arc::new(self.finish_body(Some(finish))?),
+        }
+        object.texture = Some(Arc::new(texture));
+        Ok(())
+    }
+
+    fn material(&mut self, object: &mut Object) -> Result<()> {
+        self.expect(L_BRACE, "'{'")?;
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => return Ok(()),
+                TEXTURE_KW => {
+                    let texture = self.texture_body()?;
+                    object.texture = Some(Arc::new(texture));
+                }
+                INTERIOR_KW => {
+                    let interior = self.interior_body()?;
+                    object.interior = Some(Arc::new(interior));
+                }
+                kind if Self::starts_transform(kind) => {
+                    let t = self.transformation(&token)?;
+                    if let Some(texture) = &mut object.texture {
+                        super::texture::transform_texture(Arc::make_mut(texture), &t);
+                    }
+                }
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected texture, interior or '}}' in material, found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+
+    /// `{ object... }` for clipped_by and bounded_by; `clipped_by { bounded_by }` and the
+    /// converse are kept as empty lists with POV-Ray's meaning resolved by the caller.
+    fn object_list(&mut self, keyword: &Token) -> Result<Vec<Object>> {
+        self.expect(L_BRACE, "'{'")?;
+        let mut list = Vec::new();
+        loop {
+            let token = self.next()?;
+            if token.kind == R_BRACE {
+                break;
+            }
+            if matches!(token.kind, CLIPPED_BY_KW | BOUNDED_BY_KW) && list.is_empty() {
+                return Err(self.unsupported(
+                    &token,
+                    &format!("{} {{ {} }}", self.text(keyword), self.text(&token)),
+                ));
+            }
+            self.unget(token.clone());
+            if !Self::starts_object(token.kind) {
+                return Err(self.error_at(
+                    &token,
+                    format!(
+                        "expected an object in {}, found {}",
+                        self.text(keyword),
+                        self.describe(&token)
+                    ),
+                ));
+            }
+            list.push(self.object()?);
+        }
+        Ok(list)
+    }
+
+    /// An optional boolean after a flag keyword: `hollow`, `hollow on`, `hollow off`.
+    pub fn optional_bool(&mut self) -> Result<bool> {
+        let token = self.next()?;
+        let is_value_start = matches!(
+            token.kind,
+            NUMBER | L_PAREN | TRUE_KW | FALSE_KW | ON_KW | OFF_KW | YES_KW | NO_KW | BANG
+        ) || (token.kind == IDENT
+            && token
+                .slot
+                .as_ref()
+                .is_some_and(|s| matches!(&*s.borrow(), Value::Float(_))));
+        self.unget(token);
+        if is_value_start {
+            Ok(self.float()? != 0.0)
+        } else {
+            Ok(true)
+        }
+    }
+
+    /// Reads and discards a `{ ... }` block whose contents we do not model yet but which
+    /// changes nothing in the picture when the feature it configures is off.
+    pub fn skip_braced_block(&mut self, keyword: &Token) -> Result<()> {
+        self.expect(L_BRACE, "'{'")?;
+        let mut depth = 1usize;
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                L_BRACE => depth += 1,
+                R_BRACE => {
+                    depth -= 1;
+                    if depth == 0 {
+                        return Ok(());
+                    }
+                }
+                ERROR_NODE => {
+                    return Err(
+                        self.error_at(keyword, format!("unclosed {} block", self.text(keyword)))
+                    );
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// Adds a finished top-level object to the scene; lights inside CSG join the scene's.
+    pub fn add_object(&mut self, mut object: Object) {
+        collect_lights(&mut object, &mut self.lights);
+        self.objects.push(object);
+    }
+}
+
+/// The layer `top` over the texture `below`.
+fn layer(below: Texture, top: Texture) -> Texture {
+    let mut layers = match below {
+        Texture::Layered(layers) => layers,
+        other => vec![other],
+    };
+    match top {
+        Texture::Layered(more) => layers.extend(more),
+        other => layers.push(other),
+    }
+    Texture::Layered(layers)
+}
+
+fn collect_lights(object: &mut Object, lights: &mut Vec<Light>) {
+    if let Shape::Csg {
+        children,
+        lights: inner,
+        ..
+    } = &mut object.shape
+    {
+        lights.append(inner);
+        for child in children {
+            collect_lights(child, lights);
+        }
+    }
+}
+
+/// Applies a transformation to an object and everything attached to it, so that every
+/// shape keeps a world transform and every texture its pattern-to-world transform.
+pub fn transform_object(object: &mut Object, t: &Transform) {
+    match &mut object.shape {
+        Shape::Csg {
+            children, lights, ..
+        } => {
+            for child in children {
+                transform_object(child, t);
+            }
+            for light in lights {
+                super::light::transform_light(light, t);
+            }
+        }
+        _ => object.transform = object.transform.then(t),
+    }
+    if let Some(texture) = &mut object.texture {
+        super::texture::transform_texture(Arc::make_mut(texture), t);
+    }
+    if let Some(texture) = &mut object.interior_texture {
+        super::texture::transform_texture(Arc::make_mut(texture), t);
+    }
+    for clip in object
+        .clipped_by
+        .iter_mut()
+        .chain(object.bounded_by.iter_mut())
+    {
+        transform_object(clip, t);
+    }
+    if let Some(interior) = &mut object.interior {
+        let _: &mut Interior = Arc::make_mut(interior);
+    }
+}
+
+/// Gives every object without a texture the texture of its enclosing CSG, or the default.
+pub fn inherit_texture(object: &mut Object, inherited: &Arc<Texture>) {
+    let texture = object
+        .texture
+        .get_or_insert_with(|| inherited.clone())
+        .clone();
+    if let Shape::Csg { children, .. } = &mut object.shape {
+        for child in children {
+            inherit_texture(child, &texture);
+        }
+    }
+}

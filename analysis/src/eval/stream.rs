@@ -1,0 +1,276 @@
+//! The token getter. Like POV-Ray's, it runs directives and expands macro calls as it
+//! meets them, so the statement parsers above it only ever see plain tokens, wherever in a
+//! statement the directives stand.
+
+use super::tokens::{Cond, FileId, Frame, FrameKind, RawToken, Token, opens_block};
+use super::value::Value;
+use super::{Evaluator, Result};
+use syntax::SyntaxKind::{self, *};
+use syntax::{Span, TextRange, TextSize};
+
+/// What a skip over a false branch stopped at.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SkipStop {
+    End,
+    Else,
+    ElseIf,
+    Case,
+    Range,
+    Break,
+}
+
+impl Evaluator<'_> {
+    /// The next token after directives and macro expansion. At the end of the main file it
+    /// returns an `EOF`-like token of kind `ERROR_NODE` placed at the end of the text.
+    pub fn next(&mut self) -> Result<Token> {
+        loop {
+            if let Some(token) = self.pushed.pop() {
+                return Ok(token);
+            }
+            let raw = self.next_raw()?;
+            match raw.kind {
+                HASH => self.directive(raw)?,
+                IDENT => {
+                    let name = self.text(&raw).to_owned();
+                    let slot = self.lookup(&name);
+                    if let Some(slot) = &slot {
+                        let value = slot.borrow();
+                        if let Value::Macro(def) = &*value {
+                            let def = def.clone();
+                            drop(value);
+                            self.invoke_macro(def, &raw)?;
+                            continue;
+                        }
+                    }
+                    return Ok(Token { slot, ..raw });
+                }
+                _ => return Ok(raw),
+            }
+        }
+    }
+
+    /// Gives a token back; the next `next()` returns it again.
+    pub fn unget(&mut self, token: Token) {
+        self.pushed.push(token);
+    }
+
+    /// The kind of the next token, leaving it in place.
+    pub fn peek_kind(&mut self) -> Result<SyntaxKind> {
+        let token = self.next()?;
+        let kind = token.kind;
+        self.unget(token);
+        Ok(kind)
+    }
+
+    /// Consumes the next token when it has `kind`.
+    pub fn eat(&mut self, kind: SyntaxKind) -> Result<bool> {
+        let token = self.next()?;
+        if token.kind == kind {
+            Ok(true)
+        } else {
+            self.unget(token);
+            Ok(false)
+        }
+    }
+
+    /// The next token, which must have `kind`.
+    pub fn expect(&mut self, kind: SyntaxKind, what: &str) -> Result<Token> {
+        let token = self.next()?;
+        if token.kind == kind {
+            Ok(token)
+        } else {
+            Err(self.error_at(
+                &token,
+                format!("expected {what}, found {}", self.describe(&token)),
+            ))
+        }
+    }
+
+    /// The next significant token of the current frame, without running directives or
+    /// expanding macros; ending frames are popped on the way.
+    pub fn next_raw(&mut self) -> Result<Token> {
+        loop {
+            self.spend_step()?;
+            let frame = self
+                .frames
+                .last_mut()
+                .expect("the main frame is never popped");
+            if frame.pos < frame.end {
+                let raw = self.files[frame.file as usize].tokens[frame.pos];
+                frame.pos += 1;
+                let file = frame.file;
+                return Ok(Token {
+                    kind: raw.kind,
+                    file,
+                    start: raw.start,
+                    end: raw.end,
+                    slot: None,
+                });
+            }
+            if self.frames.len() == 1 {
+                let frame = &self.frames[0];
+                if let Some(cond) = frame.conds.last() {
+                    return Err(self.unclosed(frame.file, cond));
+                }
+                let end = self.files[frame.file as usize].text.len() as u32;
+                return Ok(Token {
+                    kind: ERROR_NODE,
+                    file: frame.file,
+                    start: end,
+                    end,
+                    slot: None,
+                });
+            }
+            self.pop_frame()?;
+        }
+    }
+
+    /// Leaves the current include file or macro body.
+    pub fn pop_frame(&mut self) -> Result<()> {
+        let frame = self
+            .frames
+            .pop()
+            .expect("pop_frame is never called on the main frame");
+        if let Some(cond) = frame.conds.last() {
+            return Err(self.unclosed(frame.file, cond));
+        }
+        match frame.kind {
+            FrameKind::Main => unreachable!("the main frame is never popped"),
+            FrameKind::Include => {
+                self.scopes.pop();
+                self.include_stack.pop();
+            }
+            FrameKind::Macro { .. } => {
+                self.scopes.pop();
+                self.macro_depth -= 1;
+            }
+        }
+        Ok(())
+    }
+
+    fn unclosed(&self, file: FileId, cond: &Cond) -> Box<syntax::Diagnostic> {
+        let (what, at) = match cond {
+            Cond::If { opened_at } => ("#if", *opened_at),
+            Cond::While { opened_at, .. } => ("#while", *opened_at),
+            Cond::For { opened_at, .. } => ("#for", *opened_at),
+            Cond::Switch { opened_at, .. } => ("#switch", *opened_at),
+        };
+        let range = TextRange::at(TextSize::new(at), TextSize::of("#"));
+        self.error_in(file, range, format!("missing #end for this {what}"))
+    }
+
+    /// Skips the tokens of a branch not taken, up to the `#end` (consumed) or, when
+    /// `stop_at_branches`, to an `#else`, `#elseif`, `#case`, `#range` or `#break` at the
+    /// same nesting depth (consumed, with the `#`).
+    pub fn skip_block(&mut self, stop_at_branches: bool, opened: &Token) -> Result<SkipStop> {
+        let mut depth = 0usize;
+        let frame_index = self.frames.len() - 1;
+        loop {
+            self.spend_step()?;
+            let frame = &mut self.frames[frame_index];
+            if frame.pos >= frame.end {
+                let range = opened.range();
+                return Err(self.error_in(opened.file, range, "missing #end for this directive"));
+            }
+            let tokens = &self.files[frame.file as usize].tokens;
+            let raw = tokens[frame.pos];
+            frame.pos += 1;
+            if raw.kind != HASH || frame.pos >= frame.end {
+                continue;
+            }
+            let directive = tokens[frame.pos].kind;
+            if opens_block(directive) {
+                depth += 1;
+                frame.pos += 1;
+                continue;
+            }
+            let stop = match directive {
+                END_KW => Some(SkipStop::End),
+                ELSE_KW => Some(SkipStop::Else),
+                ELSEIF_KW => Some(SkipStop::ElseIf),
+                CASE_KW => Some(SkipStop::Case),
+                RANGE_KW => Some(SkipStop::Range),
+                BREAK_KW => Some(SkipStop::Break),
+                _ => None,
+            };
+            match stop {
+                Some(SkipStop::End) if depth > 0 => {
+                    depth -= 1;
+                    frame.pos += 1;
+                }
+                Some(SkipStop::End) => {
+                    frame.pos += 1;
+                    return Ok(SkipStop::End);
+                }
+                Some(stop) if depth == 0 && stop_at_branches => {
+                    frame.pos += 1;
+                    return Ok(stop);
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// The raw token after the next one in the current frame, without consuming anything;
+    /// used to tell a by-reference macro argument (`Name,` or `Name)`) from an expression.
+    pub fn raw_lookahead(&self, ahead: usize) -> Option<RawToken> {
+        if !self.pushed.is_empty() {
+            return None;
+        }
+        let frame = self.frames.last()?;
+        let pos = frame.pos + ahead;
+        (pos < frame.end).then(|| self.files[frame.file as usize].tokens[pos])
+    }
+
+    /// The text of a token.
+    pub fn text(&self, token: &Token) -> &str {
+        &self.files[token.file as usize].text[token.start as usize..token.end as usize]
+    }
+
+    /// A token as messages show it: `'foo'`, or "end of file".
+    pub fn describe(&self, token: &Token) -> String {
+        if token.kind == ERROR_NODE {
+            "end of file".to_owned()
+        } else {
+            format!("'{}'", self.text(token))
+        }
+    }
+
+    pub fn span(&self, token: &Token) -> Span {
+        Span {
+            file: self.files[token.file as usize].name.clone(),
+            range: token.range(),
+        }
+    }
+
+    /// Pushes a frame that reads `file` from token `start` to `end`.
+    pub fn push_frame(&mut self, frame: Frame) {
+        self.frames.push(frame);
+    }
+
+    /// The current frame's open conditionals.
+    pub fn conds(&mut self) -> &mut Vec<Cond> {
+        &mut self
+            .frames
+            .last_mut()
+            .expect("the main frame is never popped")
+            .conds
+    }
+
+    /// Moves the current frame's read position (for loops jumping back).
+    pub fn seek(&mut self, pos: usize) {
+        self.pushed.clear();
+        self.frames
+            .last_mut()
+            .expect("the main frame is never popped")
+            .pos = pos;
+    }
+
+    /// The current frame's read position.
+    pub fn position(&self) -> usize {
+        self.frames
+            .last()
+            .expect("the main frame is never popped")
+            .pos
+    }
+}

@@ -1,0 +1,101 @@
+//! Identifier scopes with POV-Ray's rules: lookups search the newest table first; `#local`
+//! always writes the current table; `#declare` writes the newest existing definition, or
+//! creates a global one.
+
+use super::Evaluator;
+use super::value::{Slot, Value};
+use std::cell::RefCell;
+use std::rc::Rc;
+
+impl Evaluator<'_> {
+    /// The storage of the most local definition of `name`.
+    pub fn lookup(&self, name: &str) -> Option<Slot> {
+        self.scopes
+            .iter()
+            .rev()
+            .find_map(|scope| scope.get(name).cloned())
+    }
+
+    /// `#declare name = value`.
+    pub fn declare(&mut self, name: &str, value: Value) {
+        if let Some(slot) = self.lookup(name) {
+            *slot.borrow_mut() = value;
+        } else {
+            self.scopes[0].insert(name.to_owned(), Rc::new(RefCell::new(value)));
+        }
+    }
+
+    /// `#local name = value`. An existing local definition keeps its storage, so that a
+    /// macro parameter passed by reference still writes through to the caller.
+    pub fn declare_local(&mut self, name: &str, value: Value) {
+        let scope = self
+            .scopes
+            .last_mut()
+            .expect("there is always a global scope");
+        match scope.get(name) {
+            Some(slot) => *slot.borrow_mut() = value,
+            None => {
+                scope.insert(name.to_owned(), Rc::new(RefCell::new(value)));
+            }
+        }
+    }
+
+    /// Binds `name` in the newest scope to existing storage (a by-reference parameter).
+    pub fn bind(&mut self, name: &str, slot: Slot) {
+        self.scopes
+            .last_mut()
+            .expect("there is always a global scope")
+            .insert(name.to_owned(), slot);
+    }
+
+    /// `#undef name`: removes the most local definition. Returns whether there was one.
+    pub fn undef(&mut self, name: &str) -> bool {
+        self.scopes
+            .iter_mut()
+            .rev()
+            .any(|scope| scope.remove(name).is_some())
+    }
+
+    /// The declared name or reserved word closest to a misspelt identifier.
+    pub fn suggest(&self, name: &str) -> Option<String> {
+        let declared = self
+            .scopes
+            .iter()
+            .flat_map(|scope| scope.keys().map(String::as_str));
+        // Reserved words are all lower case; a capitalised name is meant as an identifier.
+        let lower = name.chars().all(|c| !c.is_ascii_uppercase());
+        let keywords = syntax::KEYWORDS
+            .iter()
+            .map(|(kw, _)| *kw)
+            .filter(move |_| lower);
+        let limit = (name.len() / 3).clamp(1, 3);
+        declared
+            .chain(keywords)
+            .filter(|candidate| *candidate != name)
+            .map(|candidate| {
+                (
+                    edit_distance(&name.to_lowercase(), &candidate.to_lowercase()),
+                    candidate,
+                )
+            })
+            .filter(|(distance, _)| *distance <= limit)
+            .min_by_key(|(distance, candidate)| (*distance, candidate.len()))
+            .map(|(_, candidate)| candidate.to_owned())
+    }
+}
+
+/// Levenshtein distance, for "did you mean" suggestions.
+pub fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let substitution = diagonal + usize::from(ca != cb);
+            diagonal = row[j + 1];
+            row[j + 1] = substitution.min(row[j] + 1).min(row[j + 1] + 1);
+        }
+    }
+    row[b.len()]
+}

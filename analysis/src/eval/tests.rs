@@ -1,0 +1,174 @@
+//! Evaluator tests: small scenes in, `#debug` text, scene entities or errors out.
+
+use super::*;
+use crate::files::MemoryFiles;
+use crate::scene::Shape;
+use expect_test::{Expect, expect};
+
+fn eval(text: &str) -> Evaluation {
+    let files = MemoryFiles::new().with("scene.pov", text);
+    evaluate("scene.pov", &files, &EvalOptions::default())
+}
+
+/// The `#debug` output, or the rendered error.
+fn check_debug(text: &str, expect: Expect) {
+    let evaluation = eval(&format!("#version 3.7;\n{text}"));
+    let errors: Vec<_> = evaluation
+        .diagnostics
+        .iter()
+        .filter(|d| d.is_error())
+        .cloned()
+        .collect();
+    let out = if errors.is_empty() {
+        evaluation.debug_text()
+    } else {
+        syntax::diagnostic::render_human(&errors, &evaluation.sources)
+    };
+    expect.assert_eq(&out);
+}
+
+#[test]
+fn arithmetic_and_precedence() {
+    check_debug(
+        r#"#declare A = 1 + 2 * 3 - -4 / 2;
+#debug concat(str(A, 0, 3), "\n")
+#declare V = <1, 2, 3> * 2 + 1;
+#debug concat(vstr(3, V, ",", 0, 1), "\n")
+#debug concat(str((1 < 2) + (2 = 2) + (1 ? 5 : 7), 0, 0), "\n")
+#debug concat(str(-<2.5, 1, 1>.x, 0, 2), " ", str(int(-3.7), 0, 0), " ", str(mod(-7, 3), 0, 0), "\n")
+"#,
+        expect![[r#"
+            9.000
+            3.0,5.0,7.0
+            7
+            -2.50 -3 -1
+        "#]],
+    );
+}
+
+#[test]
+fn macros_loops_and_scopes() {
+    check_debug(
+        r#"#macro Twice(V) V * 2 #end
+#macro Bump(N) #declare N = N + 1; #end
+#declare I = 0;
+#declare Sum = 0;
+#while (I < 4)
+  #declare Sum = Sum + Twice(I);
+  Bump(I)
+#end
+#debug concat(str(Sum, 0, 0), " ", str(I, 0, 0), "\n")
+#for (K, 10, 1, -3) #debug str(K, 0, 0) #end
+#debug "\n"
+#switch (2)
+  #case (1) #debug "one" #break
+  #range (2, 3) #debug "two-three" #break
+  #else #debug "other"
+#end
+#debug "\n"
+#macro Fact(N) #if (N <= 1) 1 #else N * Fact(N - 1) #end #end
+#debug concat(str(Fact(5), 0, 0), "\n")
+"#,
+        expect![[r#"
+            12 4
+            10741
+            two-three
+            120
+        "#]],
+    );
+}
+
+#[test]
+fn arrays_and_functions() {
+    check_debug(
+        r#"#declare A = array[2][3] { {1, 2, 3}, {4, 5, 6} };
+#debug concat(str(A[1][2], 0, 0), " ", str(dimension_size(A, 2), 0, 0), "\n")
+#declare F = function(a, b) { a * a + b }
+#declare G = function { F(x, 2) * y }
+#debug concat(str(G(3, 2, 0), 0, 1), "\n")
+#declare R = seed(0);
+#debug concat(str(rand(R), 0, 9), "\n")
+"#,
+        expect![[r#"
+            6 3
+            22.0
+            0.000002874
+        "#]],
+    );
+}
+
+#[test]
+fn errors_are_located() {
+    check_debug(
+        "sphere { Foo, 1 }\n",
+        expect![[r#"
+            scene.pov:2:10: error: undeclared identifier 'Foo'
+                2 | sphere { Foo, 1 }
+                  |          ^~~
+        "#]],
+    );
+    check_debug(
+        "#macro M(A, B) A #end\n#declare X = M(1);\n",
+        expect![[r#"
+            scene.pov:3:14: error: macro 'M' takes 2 arguments, but 1 were given
+                3 | #declare X = M(1);
+                  |              ^
+            scene.pov:2:8: note: the macro is defined here
+                2 | #macro M(A, B) A #end
+                  |        ^
+        "#]],
+    );
+    check_debug(
+        "#declare I = 0;\n#while (1) #declare I = I + 1; #end\n",
+        expect![[r#"
+            scene.pov:3:1: error: loop iteration budget of 10000000 exceeded (endless loop?)
+                3 | #while (1) #declare I = I + 1; #end
+                  | ^
+            note: raise the limit with the `max-loop-iterations` option if the scene really needs more
+        "#]],
+    );
+}
+
+#[test]
+fn csg_scene_evaluates() {
+    let evaluation = eval(include_str!("../../../gallery/csg.pov"));
+    let scene = evaluation.scene.expect("csg.pov evaluates");
+    assert_eq!(scene.lights.len(), 2);
+    assert_eq!(scene.objects.len(), 1);
+    let Shape::Csg { children, .. } = &scene.objects[0].shape else {
+        panic!("a difference")
+    };
+    assert_eq!(children.len(), 2);
+    assert!(scene.objects[0].texture.is_some());
+}
+
+#[test]
+fn debug_axes_scene_evaluates() {
+    let evaluation = eval(include_str!("../../../gallery/debug-axes.pov"));
+    let scene = evaluation.scene.expect("debug-axes.pov evaluates");
+    assert_eq!(scene.objects.len(), 1 + 3 * (2 + 3));
+    let warnings: Vec<_> = evaluation
+        .diagnostics
+        .iter()
+        .map(|d| d.message.as_str())
+        .collect();
+    assert_eq!(
+        warnings,
+        ["this scene has no #version directive; assuming #version 3.7"]
+    );
+}
+
+#[test]
+fn basic_scene_camera_follows_mirrored_right() {
+    let evaluation = eval(include_str!("../../../gallery/basic.pov"));
+    let scene = evaluation.scene.expect("basic.pov evaluates");
+    let camera = &scene.camera;
+    assert!(
+        camera.right.x < 0.0,
+        "right stays mirrored: {:?}",
+        camera.right
+    );
+    assert!((camera.right.length() - 1.333).abs() < 1e-9);
+    let expected_direction = 0.5 * 1.333 / (35f64.to_radians() / 2.0).tan();
+    assert!((camera.direction.length() - expected_direction).abs() < 1e-9);
+}

@@ -1,0 +1,927 @@
+//! Textures and their parts: `texture`, `pigment`, `normal`, `finish`, `interior`, patterns
+//! with their modifiers, colour and pigment maps, and how transformations reach them.
+
+use super::tokens::Token;
+use super::value::Value;
+use super::{Evaluator, Result};
+use crate::scene::{
+    BlendMap, Colour, Finish, Interior, Normal, NormalKind, Pattern, PatternKind, Pigment,
+    Reflection, Texture, Transform, Turbulence, WaveType,
+};
+use glam::DVec3;
+use std::sync::Arc;
+use syntax::SyntaxKind::{self, *};
+
+/// The number of entries a block pattern takes in place of a map.
+fn block_entries(kind: &PatternKind) -> Option<usize> {
+    match kind {
+        PatternKind::Checker => Some(2),
+        PatternKind::Brick { .. } => Some(2),
+        PatternKind::Hexagon => Some(3),
+        PatternKind::Square => Some(4),
+        PatternKind::Triangular => Some(6),
+        _ => None,
+    }
+}
+
+impl Evaluator<'_> {
+    /// `{ ... }` after `texture`.
+    pub fn texture_body(&mut self) -> Result<Texture> {
+        self.expect(L_BRACE, "'{'")?;
+        let first = self.next()?;
+        let mut texture = match first.slot.as_ref().map(|s| s.borrow().clone()) {
+            Some(Value::Texture(t)) => Texture::clone(&t),
+            _ => {
+                self.unget(first.clone());
+                self.default_texture.clone()
+            }
+        };
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => return Ok(texture),
+                PIGMENT_KW | NORMAL_KW | FINISH_KW => {
+                    let Texture::Plain {
+                        pigment,
+                        normal,
+                        finish,
+                    } = &mut texture
+                    else {
+                        return Err(self.error_at(
+                            &token,
+                            "a patterned texture takes no pigment, normal or finish of its own",
+                        ));
+                    };
+                    match token.kind {
+                        PIGMENT_KW => *pigment = self.pigment_with(Some(pigment.clone()))?,
+                        NORMAL_KW => *normal = Some(self.normal_with(normal.clone())?),
+                        _ => *finish = Arc::new(self.finish_body(Some(finish))?),
+                    }
+                }
+                kind if Self::starts_transform(kind) => {
+                    let t = self.transformation(&token)?;
+                    transform_texture(&mut texture, &t);
+                }
+                TEXTURE_MAP_KW | MATERIAL_MAP_KW | TILES_KW | IMAGE_MAP_KW => {
+                    return Err(self.unsupported(&token, self.text(&token)));
+                }
+                kind if pattern_keyword(kind) => {
+                    return Err(self.unsupported(&token, "patterned textures"));
+                }
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected pigment, normal, finish or '}}' in texture, found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+
+    /// `{ ... }` after `pigment`, starting from a fresh black pigment.
+    pub fn pigment_body(&mut self) -> Result<Pigment> {
+        self.pigment_with(None)
+    }
+
+    /// `{ ... }` after `pigment`, modifying `base` (an object's current pigment).
+    pub fn pigment_with(&mut self, base: Option<Pigment>) -> Result<Pigment> {
+        self.expect(L_BRACE, "'{'")?;
+        let first = self.next()?;
+        let mut pigment = match first.kind {
+            IDENT => match first.slot.as_ref().map(|s| s.borrow().clone()) {
+                Some(Value::Pigment(p)) => Pigment::clone(&p),
+                Some(Value::Colour(_) | Value::Vector(_) | Value::Float(_)) => {
+                    self.unget(first);
+                    Pigment::Solid(self.scene_colour()?)
+                }
+                Some(other) => {
+                    return Err(self.error_at(
+                        &first,
+                        format!("expected a pigment or color, found {}", other.type_name()),
+                    ));
+                }
+                None => return Err(self.undeclared(&first)),
+            },
+            COLOR_KW | COLOUR_KW | RGB_KW | RGBF_KW | RGBT_KW | RGBFT_KW | SRGB_KW | SRGBF_KW
+            | SRGBT_KW | SRGBFT_KW | RED_KW | GREEN_KW | BLUE_KW | FILTER_KW | TRANSMIT_KW | LT
+            | NUMBER => {
+                self.unget(first);
+                Pigment::Solid(self.scene_colour()?)
+            }
+            IMAGE_MAP_KW => return Err(self.unsupported(&first, "image_map")),
+            kind if pattern_keyword(kind) => {
+                let pattern = self.pattern(&first)?;
+                let map = match block_entries(&pattern.kind) {
+                    Some(n) => self.block_pigments(n, &pattern.kind)?,
+                    None => default_map(&pattern.kind),
+                };
+                Pigment::Pattern {
+                    pattern: Box::new(pattern),
+                    map,
+                }
+            }
+            _ => {
+                self.unget(first);
+                base.unwrap_or(Pigment::Solid(Colour::BLACK))
+            }
+        };
+        loop {
+            let token = self.next()?;
+            if token.kind == R_BRACE {
+                return Ok(pigment);
+            }
+            if Self::starts_transform(token.kind) {
+                let t = self.transformation(&token)?;
+                transform_pigment(&mut pigment, &t);
+                continue;
+            }
+            if let Pigment::Pattern { pattern, map } = &mut pigment {
+                match token.kind {
+                    COLOR_MAP_KW | COLOUR_MAP_KW => {
+                        *map = pigment_entries(self.colour_map_body()?);
+                        continue;
+                    }
+                    PIGMENT_MAP_KW => {
+                        *map = self.pigment_map_body()?;
+                        continue;
+                    }
+                    _ => {
+                        if self.pattern_modifier(pattern, &token)? {
+                            continue;
+                        }
+                    }
+                }
+            } else if matches!(token.kind, QUICK_COLOR_KW | QUICK_COLOUR_KW) {
+                self.colour()?;
+                continue;
+            }
+            return Err(self.error_at(
+                &token,
+                format!(
+                    "expected a pigment modifier or '}}', found {}",
+                    self.describe(&token)
+                ),
+            ));
+        }
+    }
+
+    /// The colours or pigments listed after a block pattern (`checker A, B`).
+    fn block_pigments(&mut self, count: usize, kind: &PatternKind) -> Result<BlendMap<Pigment>> {
+        let mut entries = default_map(kind).entries;
+        for entry in entries.iter_mut().take(count) {
+            let token = self.next()?;
+            let pigment = match token.kind {
+                PIGMENT_KW => self.pigment_body()?,
+                COLOR_KW | COLOUR_KW | RGB_KW | RGBF_KW | RGBT_KW | RGBFT_KW | SRGB_KW
+                | SRGBF_KW | SRGBT_KW | SRGBFT_KW | RED_KW | GREEN_KW | BLUE_KW | FILTER_KW
+                | TRANSMIT_KW | LT => {
+                    self.unget(token);
+                    Pigment::Solid(self.scene_colour()?)
+                }
+                IDENT
+                    if token.slot.as_ref().is_some_and(|s| {
+                        matches!(
+                            &*s.borrow(),
+                            Value::Colour(_) | Value::Vector(_) | Value::Float(_)
+                        )
+                    }) =>
+                {
+                    self.unget(token);
+                    Pigment::Solid(self.scene_colour()?)
+                }
+                IDENT
+                    if token
+                        .slot
+                        .as_ref()
+                        .is_some_and(|s| matches!(&*s.borrow(), Value::Pigment(_))) =>
+                {
+                    match token.slot.as_ref().map(|s| s.borrow().clone()) {
+                        Some(Value::Pigment(p)) => Pigment::clone(&p),
+                        _ => unreachable!("checked just above"),
+                    }
+                }
+                _ => {
+                    self.unget(token);
+                    break;
+                }
+            };
+            entry.1 = pigment;
+            if !self.eat(COMMA)? {
+                break;
+            }
+        }
+        Ok(BlendMap { entries })
+    }
+
+    /// A pattern keyword (already read) and the parameters that follow it directly.
+    fn pattern(&mut self, keyword: &Token) -> Result<Pattern> {
+        let kind = match keyword.kind {
+            AGATE_KW => PatternKind::Agate { turb: 1.0 },
+            AVERAGE_KW => PatternKind::Average,
+            BOXED_KW => PatternKind::Boxed,
+            BOZO_KW | SPOTTED_KW => PatternKind::Bozo,
+            BRICK_KW => PatternKind::Brick {
+                size: DVec3::new(8.0, 3.0, 4.5),
+                mortar: 0.5,
+            },
+            BUMPS_KW => PatternKind::Bumps,
+            CELLS_KW => PatternKind::Cells,
+            CHECKER_KW => PatternKind::Checker,
+            CRACKLE_KW => PatternKind::Crackle {
+                form: DVec3::new(-1.0, 1.0, 0.0),
+                metric: 2.0,
+                offset: 0.0,
+                solid: false,
+            },
+            CYLINDRICAL_KW => PatternKind::Cylindrical,
+            DENTS_KW => PatternKind::Dents,
+            GRADIENT_KW => {
+                let v = self.vector()?;
+                PatternKind::Gradient(v)
+            }
+            GRANITE_KW => PatternKind::Granite,
+            HEXAGON_KW => PatternKind::Hexagon,
+            LEOPARD_KW => PatternKind::Leopard,
+            MARBLE_KW => PatternKind::Marble,
+            ONION_KW => PatternKind::Onion,
+            PLANAR_KW => PatternKind::Planar,
+            QUILTED_KW => PatternKind::Quilted {
+                control0: 1.0,
+                control1: 1.0,
+            },
+            RADIAL_KW => PatternKind::Radial,
+            RIPPLES_KW => PatternKind::Ripples,
+            SPHERICAL_KW => PatternKind::Spherical,
+            SPIRAL1_KW => PatternKind::Spiral1 {
+                arms: self.float()?,
+            },
+            SPIRAL2_KW => PatternKind::Spiral2 {
+                arms: self.float()?,
+            },
+            SQUARE_KW => PatternKind::Square,
+            TRIANGULAR_KW => PatternKind::Triangular,
+            WAVES_KW => PatternKind::Waves,
+            WOOD_KW => PatternKind::Wood,
+            WRINKLES_KW => PatternKind::Wrinkles,
+            _ => {
+                return Err(
+                    self.unsupported(keyword, &format!("the {} pattern", self.text(keyword)))
+                );
+            }
+        };
+        let mut pattern = Pattern::new(kind);
+        pattern.noise_generator = self.settings.noise_generator;
+        Ok(pattern)
+    }
+
+    /// A modifier of a pattern; false when `token` is not one.
+    fn pattern_modifier(&mut self, pattern: &mut Pattern, token: &Token) -> Result<bool> {
+        match token.kind {
+            kind if Self::starts_transform(kind) => {
+                let t = self.transformation(token)?;
+                pattern.transform = pattern.transform.then(&t);
+            }
+            TURBULENCE_KW => {
+                let amount = self.vector()?;
+                turbulence(pattern).amount = amount;
+            }
+            OCTAVES_KW => turbulence(pattern).octaves = self.int()?.clamp(1, 10) as u32,
+            OMEGA_KW => turbulence(pattern).omega = self.float()?,
+            LAMBDA_KW => turbulence(pattern).lambda = self.float()?,
+            FREQUENCY_KW => pattern.frequency = self.float()?,
+            PHASE_KW => pattern.phase = self.float()?,
+            RAMP_WAVE_KW => pattern.wave = WaveType::Ramp,
+            TRIANGLE_WAVE_KW => pattern.wave = WaveType::Triangle,
+            SINE_WAVE_KW => pattern.wave = WaveType::Sine,
+            SCALLOP_WAVE_KW => pattern.wave = WaveType::Scallop,
+            CUBIC_WAVE_KW => pattern.wave = WaveType::Cubic,
+            POLY_WAVE_KW => {
+                let exponent = if matches!(self.peek_kind()?, NUMBER | L_PAREN) {
+                    self.float()?
+                } else {
+                    1.0
+                };
+                pattern.wave = WaveType::Poly(exponent);
+            }
+            NOISE_GENERATOR_KW => pattern.noise_generator = self.int()?.clamp(1, 3) as u8,
+            AGATE_TURB_KW => {
+                let value = self.float()?;
+                if let PatternKind::Agate { turb } = &mut pattern.kind {
+                    *turb = value;
+                }
+            }
+            BRICK_SIZE_KW | MORTAR_KW => {
+                let PatternKind::Brick { size, mortar } = &mut pattern.kind else {
+                    return Err(self.error_at(
+                        token,
+                        format!("'{}' applies to brick only", self.text(token)),
+                    ));
+                };
+                if token.kind == BRICK_SIZE_KW {
+                    *size = self.vector()?;
+                } else {
+                    *mortar = self.float()?;
+                }
+            }
+            CONTROL0_KW | CONTROL1_KW => {
+                let value = self.float()?;
+                if let PatternKind::Quilted { control0, control1 } = &mut pattern.kind {
+                    if token.kind == CONTROL0_KW {
+                        *control0 = value
+                    } else {
+                        *control1 = value
+                    }
+                }
+            }
+            FORM_KW | METRIC_KW | OFFSET_KW | SOLID_KW => {
+                let PatternKind::Crackle {
+                    form,
+                    metric,
+                    offset,
+                    solid,
+                } = &mut pattern.kind
+                else {
+                    return Err(self.error_at(
+                        token,
+                        format!("'{}' applies to crackle only", self.text(token)),
+                    ));
+                };
+                match token.kind {
+                    FORM_KW => *form = self.vector()?,
+                    METRIC_KW => *metric = self.float()?,
+                    OFFSET_KW => *offset = self.float()?,
+                    _ => *solid = true,
+                }
+            }
+            WARP_KW => return Err(self.unsupported(token, "warp")),
+            _ => return Ok(false),
+        }
+        Ok(true)
+    }
+
+    /// `{ [value colour] ... }` after `color_map`, or a colour map identifier.
+    pub fn colour_map_body(&mut self) -> Result<BlendMap<Colour>> {
+        let open = self.next()?;
+        if open.kind != L_BRACE {
+            return match open.slot.as_ref().map(|s| s.borrow().clone()) {
+                Some(Value::ColourMap(map)) => Ok(BlendMap::clone(&map)),
+                _ => Err(self.error_at(
+                    &open,
+                    format!(
+                        "expected '{{' or a color_map identifier, found {}",
+                        self.describe(&open)
+                    ),
+                )),
+            };
+        }
+        let first = self.next()?;
+        let mut entries: Vec<(f64, Colour)> = match first.slot.as_ref().map(|s| s.borrow().clone())
+        {
+            Some(Value::ColourMap(map)) => map.entries.clone(),
+            _ => {
+                self.unget(first);
+                Vec::new()
+            }
+        };
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => break,
+                L_BRACK => {
+                    let value = self.float()?;
+                    if self.eat(COMMA)? {
+                        // The old two-value form: [v1, v2 color C1 color C2].
+                        let end = self.float()?;
+                        let c1 = self.scene_colour()?;
+                        let c2 = self.scene_colour()?;
+                        entries.push((value, c1));
+                        entries.push((end, c2));
+                    } else {
+                        let colour = self.scene_colour()?;
+                        entries.push((value, colour));
+                    }
+                    self.expect(R_BRACK, "']'")?;
+                }
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected '[' or '}}' in color_map, found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+        if entries.is_empty() {
+            return Err(self.error_at(&open, "a color_map needs at least one entry"));
+        }
+        Ok(BlendMap { entries })
+    }
+
+    /// `{ [value pigment{...}] ... }` after `pigment_map`.
+    pub fn pigment_map_body(&mut self) -> Result<BlendMap<Pigment>> {
+        let open = self.next()?;
+        if open.kind != L_BRACE {
+            return match open.slot.as_ref().map(|s| s.borrow().clone()) {
+                Some(Value::PigmentMap(map)) => Ok(BlendMap::clone(&map)),
+                _ => Err(self.error_at(
+                    &open,
+                    format!(
+                        "expected '{{' or a pigment_map identifier, found {}",
+                        self.describe(&open)
+                    ),
+                )),
+            };
+        }
+        let mut entries = Vec::new();
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => break,
+                L_BRACK => {
+                    let value = self.float()?;
+                    self.eat(COMMA)?;
+                    let inner = self.next()?;
+                    let pigment = match inner.kind {
+                        PIGMENT_KW => self.pigment_body()?,
+                        _ => match inner.slot.as_ref().map(|s| s.borrow().clone()) {
+                            Some(Value::Pigment(p)) => Pigment::clone(&p),
+                            _ => {
+                                self.unget(inner);
+                                Pigment::Solid(self.scene_colour()?)
+                            }
+                        },
+                    };
+                    entries.push((value, pigment));
+                    self.expect(R_BRACK, "']'")?;
+                }
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected '[' or '}}' in pigment_map, found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+        if entries.is_empty() {
+            return Err(self.error_at(&open, "a pigment_map needs at least one entry"));
+        }
+        Ok(BlendMap { entries })
+    }
+
+    /// `{ ... }` after `normal`, starting from nothing.
+    pub fn normal_body(&mut self) -> Result<Normal> {
+        self.normal_with(None)
+    }
+
+    /// `{ ... }` after `normal`, modifying `base`.
+    pub fn normal_with(&mut self, base: Option<Normal>) -> Result<Normal> {
+        self.expect(L_BRACE, "'{'")?;
+        let first = self.next()?;
+        let mut normal = match first.kind {
+            IDENT => match first.slot.as_ref().map(|s| s.borrow().clone()) {
+                Some(Value::Normal(n)) => Normal::clone(&n),
+                _ => {
+                    return Err(self.error_at(
+                        &first,
+                        format!("expected a normal pattern, found {}", self.describe(&first)),
+                    ));
+                }
+            },
+            kind if pattern_keyword(kind) => {
+                let pattern = self.pattern(&first)?;
+                let default_bump = match pattern.kind {
+                    PatternKind::Bumps
+                    | PatternKind::Dents
+                    | PatternKind::Ripples
+                    | PatternKind::Waves
+                    | PatternKind::Wrinkles => 0.4,
+                    _ => 0.5,
+                };
+                let bump_size = if self.value_follows()? {
+                    self.float()?
+                } else {
+                    default_bump
+                };
+                Normal {
+                    kind: NormalKind::Pattern {
+                        pattern: Box::new(pattern),
+                        bump_size,
+                    },
+                    accuracy: 0.02,
+                }
+            }
+            _ => {
+                self.unget(first.clone());
+                match base {
+                    Some(base) => base,
+                    None => {
+                        return Err(self.error_at(
+                            &first,
+                            format!("expected a normal pattern, found {}", self.describe(&first)),
+                        ));
+                    }
+                }
+            }
+        };
+        loop {
+            let token = self.next()?;
+            if token.kind == R_BRACE {
+                return Ok(normal);
+            }
+            if Self::starts_transform(token.kind) {
+                let t = self.transformation(&token)?;
+                transform_normal(&mut normal, &t);
+                continue;
+            }
+            match &mut normal.kind {
+                NormalKind::Pattern { pattern, bump_size } => {
+                    if token.kind == BUMP_SIZE_KW {
+                        *bump_size = self.float()?;
+                        continue;
+                    }
+                    if token.kind == ACCURACY_KW {
+                        normal.accuracy = self.float()?;
+                        continue;
+                    }
+                    if matches!(token.kind, SLOPE_MAP_KW | NORMAL_MAP_KW) {
+                        return Err(self.unsupported(&token, self.text(&token)));
+                    }
+                    if self.pattern_modifier(pattern, &token)? {
+                        continue;
+                    }
+                }
+                NormalKind::Map { pattern, .. } => {
+                    if self.pattern_modifier(pattern, &token)? {
+                        continue;
+                    }
+                }
+            }
+            return Err(self.error_at(
+                &token,
+                format!(
+                    "expected a normal modifier or '}}', found {}",
+                    self.describe(&token)
+                ),
+            ));
+        }
+    }
+
+    /// Whether a float expression starts at the next token.
+    fn value_follows(&mut self) -> Result<bool> {
+        let token = self.next()?;
+        let starts = matches!(token.kind, NUMBER | L_PAREN | MINUS | PLUS)
+            || (token.kind == IDENT
+                && token
+                    .slot
+                    .as_ref()
+                    .is_some_and(|s| matches!(&*s.borrow(), Value::Float(_))));
+        self.unget(token);
+        Ok(starts)
+    }
+
+    /// `{ ... }` after `finish`, modifying `base`.
+    pub fn finish_body(&mut self, base: Option<&Finish>) -> Result<Finish> {
+        self.expect(L_BRACE, "'{'")?;
+        let mut finish = base.cloned().unwrap_or_default();
+        let first = self.next()?;
+        match first.slot.as_ref().map(|s| s.borrow().clone()) {
+            Some(Value::Finish(f)) => finish = Finish::clone(&f),
+            _ => self.unget(first),
+        }
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => return Ok(finish),
+                AMBIENT_KW => finish.ambient = self.scene_colour()?.rgb,
+                EMISSION_KW => finish.emission = self.scene_colour()?.rgb,
+                DIFFUSE_KW => {
+                    if self.eat(ALBEDO_KW)? {
+                        finish.diffuse_albedo = true;
+                    }
+                    finish.diffuse = self.float()?;
+                    if self.eat(COMMA)? {
+                        finish.diffuse_back = self.float()?;
+                    }
+                }
+                BRILLIANCE_KW => finish.brilliance = self.float()?,
+                CRAND_KW => finish.crand = self.float()?,
+                PHONG_KW => {
+                    self.eat(ALBEDO_KW)?;
+                    finish.phong = self.float()?;
+                }
+                PHONG_SIZE_KW => finish.phong_size = self.float()?,
+                SPECULAR_KW => {
+                    self.eat(ALBEDO_KW)?;
+                    finish.specular = self.float()?;
+                }
+                ROUGHNESS_KW => finish.roughness = self.float()?,
+                METALLIC_KW => {
+                    finish.metallic = if self.value_follows()? {
+                        self.float()?
+                    } else {
+                        1.0
+                    }
+                }
+                REFLECTION_KW => finish.reflection = Some(self.reflection()?),
+                REFLECTION_EXPONENT_KW => {
+                    let exponent = self.float()?;
+                    finish.reflection.get_or_insert_with(no_reflection).exponent = exponent;
+                }
+                CONSERVE_ENERGY_KW => finish.conserve_energy = self.optional_bool()?,
+                IRID_KW | SUBSURFACE_KW => return Err(self.unsupported(&token, self.text(&token))),
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected a finish item or '}}', found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+
+    /// `reflection C`, `reflection C1, C2`, or `reflection { ... }`.
+    fn reflection(&mut self) -> Result<Reflection> {
+        let mut reflection = no_reflection();
+        if !self.eat(L_BRACE)? {
+            let c = self.scene_colour()?;
+            reflection.min = c;
+            reflection.max = c;
+            return Ok(reflection);
+        }
+        let first = self.scene_colour()?;
+        reflection.min = first;
+        reflection.max = first;
+        if self.eat(COMMA)? {
+            reflection.max = self.scene_colour()?;
+        }
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => return Ok(reflection),
+                FRESNEL_KW => reflection.fresnel = self.optional_bool()?,
+                FALLOFF_KW => reflection.falloff = self.float()?,
+                EXPONENT_KW => reflection.exponent = self.float()?,
+                METALLIC_KW => {
+                    reflection.metallic = if self.value_follows()? {
+                        self.float()?
+                    } else {
+                        1.0
+                    }
+                }
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected a reflection item or '}}', found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+
+    /// `{ ... }` after `interior`.
+    pub fn interior_body(&mut self) -> Result<Interior> {
+        self.expect(L_BRACE, "'{'")?;
+        let mut interior = Interior::default();
+        let first = self.next()?;
+        match first.slot.as_ref().map(|s| s.borrow().clone()) {
+            Some(Value::Interior(i)) => interior = Interior::clone(&i),
+            _ => self.unget(first),
+        }
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => return Ok(interior),
+                IOR_KW => interior.ior = self.float()?,
+                CAUSTICS_KW => interior.caustics = self.float()?,
+                DISPERSION_KW => interior.dispersion = self.float()?,
+                DISPERSION_SAMPLES_KW => interior.dispersion_samples = self.int()?.max(2) as u32,
+                FADE_DISTANCE_KW => interior.fade_distance = self.float()?,
+                FADE_POWER_KW => interior.fade_power = self.float()?,
+                FADE_COLOR_KW | FADE_COLOUR_KW => interior.fade_colour = self.scene_colour()?,
+                MEDIA_KW => return Err(self.unsupported(&token, "media")),
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected an interior item or '}}', found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+
+    /// `#default { texture {...} | pigment {...} | normal {...} | finish {...} }`.
+    pub fn default_directive(&mut self) -> Result<()> {
+        self.expect(L_BRACE, "'{'")?;
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => return Ok(()),
+                TEXTURE_KW => self.default_texture = self.texture_body()?,
+                PIGMENT_KW | NORMAL_KW | FINISH_KW => {
+                    let Texture::Plain {
+                        pigment,
+                        normal,
+                        finish,
+                    } = &mut self.default_texture
+                    else {
+                        return Err(
+                            self.error_at(&token, "the default texture must be a plain texture")
+                        );
+                    };
+                    let (mut p, mut n, f) = (pigment.clone(), normal.clone(), finish.clone());
+                    let mut f = Finish::clone(&f);
+                    match token.kind {
+                        PIGMENT_KW => p = self.pigment_with(Some(p))?,
+                        NORMAL_KW => n = Some(self.normal_with(n)?),
+                        _ => f = self.finish_body(Some(&f))?,
+                    }
+                    self.default_texture = Texture::Plain {
+                        pigment: p,
+                        normal: n,
+                        finish: Arc::new(f),
+                    };
+                }
+                _ => return Err(self.error_at(
+                    &token,
+                    format!(
+                        "expected texture, pigment, normal, finish or '}}' in #default, found {}",
+                        self.describe(&token)
+                    ),
+                )),
+            }
+        }
+    }
+}
+
+fn no_reflection() -> Reflection {
+    Reflection {
+        min: Colour::BLACK,
+        max: Colour::BLACK,
+        fresnel: false,
+        falloff: 1.0,
+        exponent: 1.0,
+        metallic: 0.0,
+    }
+}
+
+fn turbulence(pattern: &mut Pattern) -> &mut Turbulence {
+    pattern.turbulence.get_or_insert(Turbulence {
+        amount: DVec3::ZERO,
+        octaves: 6,
+        omega: 0.5,
+        lambda: 2.0,
+    })
+}
+
+/// Whether `kind` names a pattern.
+pub fn pattern_keyword(kind: SyntaxKind) -> bool {
+    matches!(
+        kind,
+        AGATE_KW
+            | AVERAGE_KW
+            | BOXED_KW
+            | BOZO_KW
+            | BRICK_KW
+            | BUMPS_KW
+            | CELLS_KW
+            | CHECKER_KW
+            | CRACKLE_KW
+            | CYLINDRICAL_KW
+            | DENTS_KW
+            | FACETS_KW
+            | FUNCTION_KW
+            | GRADIENT_KW
+            | GRANITE_KW
+            | HEXAGON_KW
+            | IMAGE_PATTERN_KW
+            | JULIA_KW
+            | LEOPARD_KW
+            | MAGNET_KW
+            | MANDEL_KW
+            | MARBLE_KW
+            | OBJECT_KW
+            | ONION_KW
+            | PAVEMENT_KW
+            | PIGMENT_PATTERN_KW
+            | PLANAR_KW
+            | QUILTED_KW
+            | RADIAL_KW
+            | RIPPLES_KW
+            | SLOPE_KW
+            | SPHERICAL_KW
+            | SPIRAL1_KW
+            | SPIRAL2_KW
+            | SPOTTED_KW
+            | SQUARE_KW
+            | TILING_KW
+            | TRIANGULAR_KW
+            | WAVES_KW
+            | WOOD_KW
+            | WRINKLES_KW
+    )
+}
+
+/// A map of solid pigments from a colour map.
+fn pigment_entries(map: BlendMap<Colour>) -> BlendMap<Pigment> {
+    BlendMap {
+        entries: map
+            .entries
+            .into_iter()
+            .map(|(v, c)| (v, Pigment::Solid(c)))
+            .collect(),
+    }
+}
+
+/// The colours a pattern shows without a colour map: greyscale for most; block patterns
+/// and a few others have their own documented defaults.
+fn default_map(kind: &PatternKind) -> BlendMap<Pigment> {
+    let solid = |r, g, b| Pigment::Solid(Colour::rgb(r, g, b));
+    let entries = match kind {
+        PatternKind::Checker => vec![(0.0, solid(0.0, 0.0, 1.0)), (1.0, solid(0.0, 1.0, 0.0))],
+        PatternKind::Brick { .. } => vec![(0.0, solid(1.0, 1.0, 1.0)), (1.0, solid(1.0, 0.0, 0.0))],
+        PatternKind::Hexagon => vec![
+            (0.0, solid(0.0, 0.0, 1.0)),
+            (1.0, solid(0.0, 1.0, 0.0)),
+            (2.0, solid(1.0, 0.0, 0.0)),
+        ],
+        PatternKind::Square => vec![
+            (0.0, solid(1.0, 0.0, 0.0)),
+            (1.0, solid(0.0, 0.0, 1.0)),
+            (2.0, solid(1.0, 1.0, 0.0)),
+            (3.0, solid(0.0, 1.0, 0.0)),
+        ],
+        PatternKind::Triangular => vec![
+            (0.0, solid(1.0, 0.0, 0.0)),
+            (1.0, solid(0.0, 1.0, 0.0)),
+            (2.0, solid(0.0, 0.0, 1.0)),
+            (3.0, solid(1.0, 1.0, 0.0)),
+            (4.0, solid(0.0, 1.0, 1.0)),
+            (5.0, solid(1.0, 0.0, 1.0)),
+        ],
+        _ => vec![(0.0, solid(0.0, 0.0, 0.0)), (1.0, solid(1.0, 1.0, 1.0))],
+    };
+    BlendMap { entries }
+}
+
+/// Applies an object's transformation to a texture's patterns, recursively.
+pub fn transform_texture(texture: &mut Texture, t: &Transform) {
+    match texture {
+        Texture::Plain {
+            pigment, normal, ..
+        } => {
+            transform_pigment(pigment, t);
+            if let Some(normal) = normal {
+                transform_normal(normal, t);
+            }
+        }
+        Texture::Pattern { pattern, map } => {
+            pattern.transform = pattern.transform.then(t);
+            for (_, entry) in &mut map.entries {
+                transform_texture(entry, t);
+            }
+        }
+        Texture::Layered(layers) => {
+            for layer in layers {
+                transform_texture(layer, t);
+            }
+        }
+    }
+}
+
+fn transform_pigment(pigment: &mut Pigment, t: &Transform) {
+    if let Pigment::Pattern { pattern, map } = pigment {
+        pattern.transform = pattern.transform.then(t);
+        for (_, entry) in &mut map.entries {
+            transform_pigment(entry, t);
+        }
+    }
+}
+
+fn transform_normal(normal: &mut Normal, t: &Transform) {
+    match &mut normal.kind {
+        NormalKind::Pattern { pattern, .. } => pattern.transform = pattern.transform.then(t),
+        NormalKind::Map { pattern, map } => {
+            pattern.transform = pattern.transform.then(t);
+            for (_, entry) in &mut map.entries {
+                transform_normal(entry, t);
+            }
+        }
+    }
+}

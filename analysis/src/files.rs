@@ -1,0 +1,73 @@
+//! Where scene and include texts come from. The evaluator never touches the file system
+//! itself: the CLI supplies files from its search paths, the Typst plugin from the
+//! document's `includes`, tests from memory. The standard includes are found last.
+
+use std::collections::BTreeMap;
+use std::sync::Arc;
+use syntax::SourceResolver;
+
+/// Supplies file texts by the name a scene uses for them.
+pub trait FileSource {
+    /// The text of `name`, or `None` when this source does not have it.
+    fn read(&self, name: &str) -> Option<Arc<str>>;
+    /// Every name this source can supply, listed in "missing include" errors.
+    fn names(&self) -> Vec<String>;
+}
+
+/// Files held in memory, such as the Typst package's `includes` dictionary.
+#[derive(Debug, Clone, Default)]
+pub struct MemoryFiles {
+    files: BTreeMap<String, Arc<str>>,
+}
+
+impl MemoryFiles {
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    pub fn insert(&mut self, name: impl Into<String>, text: impl Into<Arc<str>>) -> &mut Self {
+        self.files.insert(name.into(), text.into());
+        self
+    }
+
+    pub fn with(mut self, name: impl Into<String>, text: impl Into<Arc<str>>) -> Self {
+        self.insert(name, text);
+        self
+    }
+}
+
+impl FileSource for MemoryFiles {
+    fn read(&self, name: &str) -> Option<Arc<str>> {
+        self.files.get(name).cloned()
+    }
+
+    fn names(&self) -> Vec<String> {
+        self.files.keys().cloned().collect()
+    }
+}
+
+/// The texts of every file an evaluation read, so that diagnostics can quote them.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Sources {
+    files: BTreeMap<String, Arc<str>>,
+}
+
+impl Sources {
+    pub fn insert(&mut self, name: &str, text: Arc<str>) {
+        self.files.entry(name.to_owned()).or_insert(text);
+    }
+
+    pub fn get(&self, name: &str) -> Option<&Arc<str>> {
+        self.files.get(name)
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = (&str, &Arc<str>)> {
+        self.files.iter().map(|(name, text)| (name.as_str(), text))
+    }
+}
+
+impl SourceResolver for Sources {
+    fn source(&self, file: &str) -> Option<&str> {
+        self.files.get(file).map(|text| &**text)
+    }
+}
