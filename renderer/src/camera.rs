@@ -1,62 +1,200 @@
-//! Primary rays. The camera's vectors are used as the scene gives them (the evaluator has
-//! applied `look_at`, `angle` and `sky`), so a mirrored `right` mirrors the picture, as in
-//! POV-Ray.
+//! Primary rays for every POV-Ray projection. The camera's vectors are used as the scene
+//! gives them (the evaluator has applied `look_at`, `angle` and `sky`), so a mirrored
+//! `right` mirrors the picture, as in POV-Ray. The projections follow the manual's
+//! description of each camera type: perspective and orthographic map the image onto the
+//! `right`/`up` plane; fisheye, ultra_wide_angle, omnimax, panoramic, the four cylinder
+//! cameras and spherical map it onto angles.
 
 use crate::ray::Ray;
 use analysis::scene::{self, CameraKind};
-use glam::DVec3;
+use glam::{DMat3, DVec3};
+use std::f64::consts::{FRAC_PI_2, PI};
 
 #[derive(Debug, Clone)]
 pub struct Camera {
-    kind: Projection,
+    kind: CameraKind,
     location: DVec3,
     direction: DVec3,
     right: DVec3,
     up: DVec3,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Projection {
-    Perspective,
-    Orthographic,
+    /// The viewing angle in degrees for the angular projections.
+    angle: f64,
+    right_len: f64,
+    up_len: f64,
 }
 
 impl Camera {
     pub fn from_scene(camera: &scene::Camera) -> Result<Camera, String> {
-        let kind = match camera.kind {
-            CameraKind::Perspective => Projection::Perspective,
-            CameraKind::Orthographic => Projection::Orthographic,
-            other => return Err(format!("not supported yet: {other:?} camera")),
-        };
         if camera.focal_blur.is_some() {
             return Err("not supported yet: focal blur".into());
         }
-        Ok(Camera {
-            kind,
+        let (right_len, up_len) = (camera.right.length(), camera.up.length());
+        let mut c = Camera {
+            kind: camera.kind,
             location: camera.location,
             direction: camera.direction,
             right: camera.right,
             up: camera.up,
-        })
+            angle: camera.angle.unwrap_or(90.0),
+            right_len,
+            up_len,
+        };
+        // These projections use unit vectors; the others use the vectors' lengths.
+        if matches!(
+            c.kind,
+            CameraKind::Fisheye
+                | CameraKind::Omnimax
+                | CameraKind::UltraWideAngle
+                | CameraKind::Cylinder(_)
+        ) {
+            c.right = c.right.normalize_or_zero();
+            c.up = c.up.normalize_or_zero();
+            c.direction = c.direction.normalize_or_zero();
+        }
+        Ok(c)
     }
 
     /// The ray through image position `(x, y)`, in pixels from the top-left corner of the
-    /// image (pixel centres at half-integers). `None` when the projection has no ray there.
+    /// image (pixel centres at half-integers). `None` where the projection has no ray.
     pub fn ray(&self, x: f64, y: f64, width: f64, height: f64) -> Option<Ray> {
+        // Image position as -0.5..0.5 across and 0.5..-0.5 down.
         let x0 = x / width - 0.5;
         let y0 = 0.5 - y / height;
-        let ray = match self.kind {
-            Projection::Perspective => Ray::new(
+        let (origin, direction) = match self.kind {
+            CameraKind::Perspective => (
                 self.location,
                 self.direction + x0 * self.right + y0 * self.up,
             ),
-            Projection::Orthographic => Ray::new(
+            CameraKind::Orthographic => (
                 self.location + x0 * self.right + y0 * self.up,
                 self.direction,
             ),
+            CameraKind::Fisheye => {
+                let (u, v) = (2.0 * x0 * self.right_len, 2.0 * y0 * self.up_len);
+                let rad = (u * u + v * v).sqrt();
+                if rad > 1.0 {
+                    return None;
+                }
+                let phi = polar_angle(u, v, rad);
+                let theta = rad * self.angle.to_radians() / 2.0;
+                (self.location, self.angular(phi, theta))
+            }
+            CameraKind::Omnimax => {
+                let (mut u, mut v) = (2.0 * x0, 2.0 * y0);
+                let a = ratio(self.right_len, self.up_len);
+                if a > 1.0 {
+                    if a > 1.283458 {
+                        u *= a / 1.283458;
+                        v = (v - 1.0) / 1.283458 + 1.0;
+                    } else {
+                        v = (v - 1.0) / a + 1.0;
+                    }
+                } else {
+                    v /= a;
+                }
+                let rad = (u * u + v * v).sqrt();
+                if rad > 1.0 {
+                    return None;
+                }
+                let phi = polar_angle(u, v, rad);
+                let theta = 1.411269 * rad - 0.09439 * rad.powi(3) + 0.25674 * rad.powi(5);
+                let (st, ct) = theta.sin_cos();
+                // Nothing below 45 degrees under the projection axis.
+                if phi.sin() * st < (135f64).to_radians().tan() * ct {
+                    return None;
+                }
+                (self.location, self.angular(phi, theta))
+            }
+            CameraKind::Panoramic => {
+                let u = (1.0 - (x0 + 0.5)) * PI;
+                let v = FRAC_PI_2 * 2.0 * y0;
+                let ty = if (FRAC_PI_2 - v.abs()).abs() < 1e-10 {
+                    v.signum() * 1e10
+                } else {
+                    v.tan()
+                };
+                (
+                    self.location,
+                    u.cos() * self.right + ty * self.up + u.sin() * self.direction,
+                )
+            }
+            CameraKind::UltraWideAngle => {
+                let u = x0 * self.angle.to_radians();
+                let v = y0 * self.angle.to_radians() * ratio(self.up_len, self.right_len);
+                (
+                    self.location,
+                    u.sin() * self.right + v.sin() * self.up + u.cos() * v.cos() * self.direction,
+                )
+            }
+            CameraKind::Cylinder(n) => {
+                let a = self.angle.to_radians();
+                match n {
+                    1 => {
+                        let u = x0 * a;
+                        let v = y0 * self.up_len;
+                        (
+                            self.location,
+                            u.sin() * self.right + v * self.up + u.cos() * self.direction,
+                        )
+                    }
+                    2 => {
+                        let v = y0 * a;
+                        let u = x0 * self.right_len;
+                        (
+                            self.location,
+                            u * self.right + v.sin() * self.up + v.cos() * self.direction,
+                        )
+                    }
+                    3 => {
+                        let u = x0 * a;
+                        let v = y0 * self.up_len;
+                        (
+                            self.location + v * self.up,
+                            u.sin() * self.right + u.cos() * self.direction,
+                        )
+                    }
+                    _ => {
+                        let v = y0 * a;
+                        let u = x0 * self.right_len;
+                        (
+                            self.location + u * self.right,
+                            v.sin() * self.up + v.cos() * self.direction,
+                        )
+                    }
+                }
+            }
+            CameraKind::Spherical { h_angle, v_angle } => {
+                let lat = y0 * v_angle.to_radians();
+                let lon = x0 * h_angle.to_radians();
+                // Turn the direction up by the latitude about `right`, then about `up`
+                // by the longitude.
+                let v1 = DMat3::from_axis_angle(self.right, -lat) * self.direction;
+                (self.location, DMat3::from_axis_angle(self.up, lon) * v1)
+            }
         };
-        let direction = ray.direction.normalize_or_zero();
-        (direction != DVec3::ZERO && ray.origin.is_finite())
-            .then(|| Ray::new(ray.origin, direction))
+        let direction = direction.normalize_or_zero();
+        (direction != DVec3::ZERO && direction.is_finite() && origin.is_finite())
+            .then(|| Ray::new(origin, direction))
+    }
+
+    /// The direction at azimuth `phi` around the view axis and `theta` away from it.
+    fn angular(&self, phi: f64, theta: f64) -> DVec3 {
+        let (sp, cp) = phi.sin_cos();
+        let (st, ct) = theta.sin_cos();
+        (cp * st) * self.right + (sp * st) * self.up + ct * self.direction
+    }
+}
+
+fn ratio(a: f64, b: f64) -> f64 {
+    if b > 0.0 { a / b } else { 1.0 }
+}
+
+fn polar_angle(u: f64, v: f64, rad: f64) -> f64 {
+    if rad == 0.0 {
+        0.0
+    } else if u < 0.0 {
+        PI - (v / rad).asin()
+    } else {
+        (v / rad).asin()
     }
 }
