@@ -7,7 +7,7 @@ use crate::colour::Sample;
 use crate::light::Light;
 use crate::material::{self, Material};
 use crate::object::{Csg, CsgKind, Leaf, Object, Visibility};
-use crate::shapes::{Cone, Cuboid, Cylinder, Plane, Shape, Sphere};
+use crate::shapes::{Cone, Cuboid, Cylinder, Disc, Plane, Shape, Sphere, Torus, Triangle};
 use crate::tracer::{Quality, World};
 use analysis::scene::{self, CsgOp, Origin, Scene};
 use glam::{DAffine3, DMat3, DVec3};
@@ -247,15 +247,43 @@ impl Builder {
                     DAffine3::IDENTITY,
                 )
             }
-            other => {
-                // The variant's name, as the scene's Debug form spells it.
-                let name = format!("{other:?}");
-                let name = name.split([' ', '{', '(']).next().unwrap_or_default();
-                return Err(fail(format!(
-                    "not supported yet: {}",
-                    name.to_ascii_lowercase()
-                )));
+            scene::Shape::Disc {
+                center,
+                normal,
+                radius,
+                hole_radius,
+            } => {
+                let frame = axis_frame(*center, *center + normal.normalize_or_zero(), 1.0)
+                    .ok_or_else(|| fail("degenerate disc: the normal is zero".into()))?;
+                (
+                    Shape::Disc(Disc {
+                        radius: radius.abs(),
+                        hole: hole_radius.abs(),
+                    }),
+                    frame,
+                )
             }
+            scene::Shape::Torus { major, minor, .. } => (
+                Shape::Torus(Torus {
+                    major: major.abs(),
+                    minor: minor.abs(),
+                }),
+                DAffine3::IDENTITY,
+            ),
+            scene::Shape::Triangle { corners } => (
+                Shape::Triangle(Triangle {
+                    corners: *corners,
+                    normals: None,
+                }),
+                DAffine3::IDENTITY,
+            ),
+            scene::Shape::SmoothTriangle { corners, normals } => (
+                Shape::Triangle(Triangle {
+                    corners: *corners,
+                    normals: Some(normals.map(|n| n.normalize_or_zero())),
+                }),
+                DAffine3::IDENTITY,
+            ),
         };
         let material = self.material(texture, &object.origin)?;
         let to_world = object.transform.matrix * frame;

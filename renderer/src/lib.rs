@@ -12,6 +12,7 @@ mod material;
 mod object;
 mod options;
 mod png_output;
+mod polynomial;
 mod ray;
 mod render;
 mod sampling;

@@ -5,14 +5,20 @@
 mod cone;
 mod cuboid;
 mod cylinder;
+mod disc;
 mod plane;
 mod sphere;
+mod torus;
+mod triangle;
 
 pub use cone::Cone;
 pub use cuboid::Cuboid;
 pub use cylinder::Cylinder;
+pub use disc::Disc;
 pub use plane::Plane;
 pub use sphere::Sphere;
+pub use torus::Torus;
+pub use triangle::Triangle;
 
 use crate::bounds::Aabb;
 use crate::ray::Ray;
@@ -71,6 +77,9 @@ pub enum Shape {
     Cylinder(Cylinder),
     Cone(Cone),
     Plane(Plane),
+    Disc(Disc),
+    Torus(Torus),
+    Triangle(Triangle),
 }
 
 impl Shape {
@@ -82,6 +91,9 @@ impl Shape {
             Shape::Cylinder(s) => s.intersect(ray, roots),
             Shape::Cone(s) => s.intersect(ray, roots),
             Shape::Plane(s) => s.intersect(ray, roots),
+            Shape::Disc(s) => s.intersect(ray, roots),
+            Shape::Torus(s) => s.intersect(ray, roots),
+            Shape::Triangle(s) => s.intersect(ray, roots),
         }
     }
 
@@ -92,6 +104,9 @@ impl Shape {
             Shape::Cylinder(s) => s.inside(p),
             Shape::Cone(s) => s.inside(p),
             Shape::Plane(s) => s.inside(p),
+            Shape::Disc(s) => s.inside(p),
+            Shape::Torus(s) => s.inside(p),
+            Shape::Triangle(_) => false,
         }
     }
 
@@ -103,6 +118,9 @@ impl Shape {
             Shape::Cylinder(s) => s.normal(p, part),
             Shape::Cone(s) => s.normal(p, part),
             Shape::Plane(s) => s.normal,
+            Shape::Disc(_) => DVec3::Z,
+            Shape::Torus(s) => s.normal(p),
+            Shape::Triangle(s) => s.normal(p),
         }
     }
 
@@ -117,6 +135,18 @@ impl Shape {
                 Aabb::new(DVec3::new(-r, -r, 0.0), DVec3::new(r, r, 1.0))
             }
             Shape::Plane(s) => s.bounds(),
+            Shape::Disc(s) => Aabb::new(
+                DVec3::new(-s.radius, -s.radius, 0.0),
+                DVec3::new(s.radius, s.radius, 0.0),
+            ),
+            Shape::Torus(s) => {
+                let r = s.major + s.minor;
+                Aabb::new(DVec3::new(-r, -s.minor, -r), DVec3::new(r, s.minor, r))
+            }
+            Shape::Triangle(s) => {
+                let [a, b, c] = s.corners;
+                Aabb::new(a.min(b).min(c), a.max(b).max(c))
+            }
         }
     }
 }

@@ -1,0 +1,59 @@
+//! `torus { major, minor }`: the tube of radius `minor` around the circle of radius `major`
+//! in the x-z plane, centred on the origin.
+
+use super::Roots;
+use crate::polynomial;
+use crate::ray::Ray;
+use glam::DVec3;
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Torus {
+    pub major: f64,
+    pub minor: f64,
+}
+
+impl Torus {
+    pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
+        let (big, small) = (self.major, self.minor);
+        // Work from where the ray enters the bounding sphere, so that the quartic's
+        // coefficients stay of the torus's own size.
+        let bound = big + small;
+        let a = ray.direction.length_squared();
+        let b = ray.origin.dot(ray.direction);
+        let c = ray.origin.length_squared() - bound * bound;
+        let Some((t0, t1)) = super::solve_quadratic_half(a, b, c) else {
+            return;
+        };
+        let o = ray.origin + ray.direction * t0;
+        let d = ray.direction;
+        let (r2, k2) = (big * big, small * small);
+        let qa = a;
+        let qb = 2.0 * o.dot(d);
+        let qc = o.length_squared() + r2 - k2;
+        let e = d.x * d.x + d.z * d.z;
+        let f = 2.0 * (o.x * d.x + o.z * d.z);
+        let g = o.x * o.x + o.z * o.z;
+        let coeffs = [
+            qc * qc - 4.0 * r2 * g,
+            2.0 * qb * qc - 4.0 * r2 * f,
+            qb * qb + 2.0 * qa * qc - 4.0 * r2 * e,
+            2.0 * qa * qb,
+            qa * qa,
+        ];
+        let mut found = Vec::with_capacity(4);
+        polynomial::roots_in(&coeffs, 0.0, t1 - t0, &mut found);
+        for t in found {
+            roots.push(t0 + t, 0);
+        }
+    }
+
+    pub fn inside(&self, p: DVec3) -> bool {
+        let ring = (p.x * p.x + p.z * p.z).sqrt() - self.major;
+        ring * ring + p.y * p.y < self.minor * self.minor
+    }
+
+    pub fn normal(&self, p: DVec3) -> DVec3 {
+        let radial = DVec3::new(p.x, 0.0, p.z).normalize_or_zero();
+        p - radial * self.major
+    }
+}
