@@ -71,7 +71,12 @@ impl Poly {
 /// Appends to `out` the distinct real roots of `coeffs` (at most degree 15) in
 /// `[lo, hi]`, ascending.
 pub fn roots_in(coeffs: &[f64], lo: f64, hi: f64, out: &mut Vec<f64>) {
-    if coeffs.len() > MAX_DEGREE + 1 || !(lo < hi) || coeffs.iter().any(|c| !c.is_finite()) {
+    if coeffs.len() > MAX_DEGREE + 1
+        || lo.is_nan()
+        || hi.is_nan()
+        || lo >= hi
+        || coeffs.iter().any(|c| !c.is_finite())
+    {
         return;
     }
     let mut p = Poly::ZERO;
