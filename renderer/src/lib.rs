@@ -11,6 +11,7 @@ mod light;
 mod material;
 mod object;
 mod options;
+pub mod pipeline;
 mod png_output;
 mod polynomial;
 mod ray;

@@ -1,0 +1,74 @@
+//! Source to pixels, for the CLI and the Typst plugin: `analysis::check` reports the
+//! scene's problems or produces its description, and the renderer draws it. Every failure
+//! comes back as diagnostics with the sources needed to print them.
+
+use crate::image::Image;
+use crate::options::RenderOptions;
+use analysis::{EvalOptions, FileSource, Message, Sources};
+use syntax::{Diagnostic, TextRange};
+
+/// A finished render with what the scene printed and warned about.
+#[derive(Debug, Clone)]
+pub struct Rendered {
+    pub image: Image,
+    /// `#debug` text, in order.
+    pub messages: Vec<Message>,
+    pub warnings: Vec<Diagnostic>,
+}
+
+/// Why a scene did not render: its errors (and any warnings before them).
+#[derive(Debug, Clone)]
+pub struct Failure {
+    pub diagnostics: Vec<Diagnostic>,
+    pub sources: Sources,
+}
+
+impl Failure {
+    /// The diagnostics as gcc-style text with source excerpts.
+    pub fn to_human(&self) -> String {
+        syntax::diagnostic::render_human(&self.diagnostics, &self.sources)
+    }
+}
+
+/// Evaluates the scene file `main` (read through `files`) and renders it.
+pub fn render_source(
+    main: &str,
+    files: &dyn FileSource,
+    options: &RenderOptions,
+) -> Result<Rendered, Failure> {
+    let eval_options = EvalOptions {
+        image_width: options.width,
+        image_height: options.height,
+        clock: options.clock.unwrap_or(0.0),
+        ..EvalOptions::default()
+    };
+    let evaluation = analysis::check(main, files, &eval_options);
+    let scene = match evaluation.scene {
+        Some(scene) if !evaluation.diagnostics.iter().any(Diagnostic::is_error) => scene,
+        _ => {
+            return Err(Failure {
+                diagnostics: evaluation.diagnostics,
+                sources: evaluation.sources,
+            });
+        }
+    };
+    match crate::render::render(&scene, options) {
+        Ok(image) => Ok(Rendered {
+            image,
+            messages: evaluation.messages,
+            warnings: evaluation.diagnostics,
+        }),
+        Err(error) => {
+            let diagnostic = match error.origin {
+                Some(span) => Diagnostic::error(span.file, span.range, error.message),
+                None => Diagnostic::error(main, TextRange::default(), error.message),
+            };
+            let mut diagnostics = evaluation.diagnostics;
+            diagnostics.push(diagnostic);
+            Err(Failure {
+                diagnostics,
+                sources: evaluation.sources,
+            })
+        }
+    }
+}

@@ -1,0 +1,117 @@
+//! The fidelity manifest (`tests/reference/scenes.txt`): which scenes are compared with
+//! POV-Ray's renders, at which settings, against which thresholds; and rendering one of
+//! them through the same pipeline as the CLI.
+
+use crate::image_compare::{Picture, Thresholds};
+use crate::workspace_root;
+use std::path::{Path, PathBuf};
+
+/// One line of the manifest.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FidelityScene {
+    pub name: String,
+    /// From the workspace root.
+    pub scene: PathBuf,
+    /// POV-Ray options, as `povray` and `RenderOptions::apply_povray_option` read them.
+    pub options: Vec<String>,
+    pub thresholds: Thresholds,
+}
+
+impl FidelityScene {
+    pub fn reference_png(&self) -> PathBuf {
+        reference_dir()
+            .join("png")
+            .join(format!("{}.png", self.name))
+    }
+
+    pub fn render_options(&self) -> renderer::RenderOptions {
+        let mut options = renderer::RenderOptions::default();
+        for option in &self.options {
+            options
+                .apply_povray_option(option)
+                .unwrap_or_else(|e| panic!("{}: {e}", self.name));
+        }
+        options
+    }
+
+    /// Renders the scene (with its directory's files available to `#include`) and decodes
+    /// the PNG we would write.
+    pub fn render_with(&self, source: &str) -> Result<Picture, String> {
+        let options = self.render_options();
+        let path = workspace_root().join(&self.scene);
+        let name = path
+            .file_name()
+            .and_then(|n| n.to_str())
+            .ok_or("scene path has no file name")?;
+        let mut files = analysis::MemoryFiles::new();
+        files.insert(name, source);
+        if let Some(dir) = path.parent() {
+            add_includes(dir, &mut files);
+        }
+        let rendered =
+            renderer::pipeline::render_source(name, &files, &options).map_err(|f| f.to_human())?;
+        Picture::decode(&renderer::encode_png(&rendered.image, &options))
+    }
+
+    pub fn source(&self) -> String {
+        let path = workspace_root().join(&self.scene);
+        std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+    }
+}
+
+/// The `.inc` files beside a scene.
+fn add_includes(dir: &Path, files: &mut analysis::MemoryFiles) {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let path = entry.path();
+        if path.extension().is_some_and(|e| e == "inc")
+            && let (Some(name), Ok(text)) = (
+                path.file_name().and_then(|n| n.to_str()),
+                std::fs::read_to_string(&path),
+            )
+        {
+            files.insert(name, text);
+        }
+    }
+}
+
+pub fn reference_dir() -> PathBuf {
+    workspace_root().join("tests/reference")
+}
+
+/// Reads `tests/reference/scenes.txt`.
+pub fn manifest() -> Vec<FidelityScene> {
+    let path = reference_dir().join("scenes.txt");
+    let text = std::fs::read_to_string(&path).expect("tests/reference/scenes.txt");
+    text.lines()
+        .filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
+        .map(|line| parse_line(line).unwrap_or_else(|e| panic!("scenes.txt: `{line}`: {e}")))
+        .collect()
+}
+
+fn parse_line(line: &str) -> Result<FidelityScene, String> {
+    let (settings, limits) = line.split_once('|').ok_or("no `|` before the thresholds")?;
+    let mut words = settings.split_whitespace();
+    let name = words.next().ok_or("no name")?.to_string();
+    let scene = PathBuf::from(words.next().ok_or("no scene file")?);
+    let options = words.map(str::to_string).collect();
+    let mut thresholds = Thresholds::GEOMETRIC;
+    for limit in limits.split_whitespace() {
+        let (key, value) = limit.split_once('=').ok_or("threshold without `=`")?;
+        let value: f64 = value.parse().map_err(|_| format!("bad number `{value}`"))?;
+        match key {
+            "ssim" => thresholds.min_ssim = value,
+            "mean" => thresholds.max_mean_error = value,
+            "large" => thresholds.max_large_error_share = value,
+            _ => return Err(format!("unknown threshold `{key}`")),
+        }
+    }
+    Ok(FidelityScene {
+        name,
+        scene,
+        options,
+        thresholds,
+    })
+}
