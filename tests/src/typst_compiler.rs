@@ -54,8 +54,14 @@ impl Document {
     /// Compiles to PDF, or fails with the compiler's error.
     pub fn compile(&self) -> Result<Vec<u8>, CompileError> {
         let pdf = self.dir.path().join("main.pdf");
-        self.run(&[pdf.to_str().expect("a UTF-8 temporary path")])?;
+        self.compile_to(&pdf)?;
         Ok(std::fs::read(pdf).expect("the compiler wrote no PDF"))
+    }
+
+    /// Compiles to `output`, a `.pdf`, `.png` or `.svg` file.
+    pub fn compile_to(&self, output: &Path) -> Result<(), CompileError> {
+        self.run(&[output.to_str().expect("a UTF-8 path")])?;
+        Ok(())
     }
 
     /// The error message of a compile that must fail.

@@ -1,6 +1,6 @@
-//! The Typst package's arguments through the real Typst compiler: every keyword argument
-//! is checked before the plugin runs, and a wrong one stops the document with a message
-//! that names it.
+//! The Typst package through the real Typst compiler, where no rendering is needed: every
+//! keyword argument is checked before the plugin runs and a wrong one stops the document
+//! with a message that names it; `defaults`, `version()` and syntax highlighting.
 
 use expect_test::expect;
 use tests::typst_compiler::Document;
@@ -139,4 +139,25 @@ fn defaults_and_version() {
     assert!(toml.contains(&format!("\nversion = {}\n", result["version"])));
     assert_eq!(result["version"], env!("CARGO_PKG_VERSION"));
     expect![[r#"{"aa-depth":3,"aa-gamma":null,"aa-jitter":true,"aa-jitter-amount":null,"aa-method":2,"aa-threshold":0.3,"antialias":true,"bounding":null,"bounding-threshold":null,"compression":null,"display-gamma":null,"end-column":null,"end-row":null,"extra":[],"file-gamma":null,"files":{},"height":600,"includes":{},"max-trace-level":null,"output-alpha":false,"quality":9,"remove-bounds":null,"split-unions":null,"start-column":null,"start-row":null,"width":800}"#]].assert_eq(&result["defaults"].to_string());
+}
+
+/// The distinct fill colours of the text in the SVG of a document.
+fn text_colours(doc: &Document) -> usize {
+    let svg = doc.dir().join("main.svg");
+    doc.compile_to(&svg).unwrap();
+    let svg = std::fs::read_to_string(svg).unwrap();
+    let mut fills: Vec<&str> = svg.split("fill=\"").skip(1).map(|s| &s[..7]).collect();
+    fills.sort();
+    fills.dedup();
+    fills.len()
+}
+
+#[test]
+fn highlight_colours_povray_blocks() {
+    let block = "```povray\n#declare R = 1; // radius\nsphere { <0, 1, 2>, R pigment { rgb sin(pi) } }\n```\n";
+    let plain = Document::new(&format!("{IMPORT}{block}"));
+    let highlighted = Document::new(&format!("{IMPORT}#show: highlight\n{block}"));
+    // Black text on a white page, against keywords, functions, numbers and comments.
+    assert_eq!(text_colours(&plain), 2);
+    assert!(text_colours(&highlighted) >= 5);
 }
