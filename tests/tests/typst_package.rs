@@ -161,3 +161,13 @@ fn highlight_colours_povray_blocks() {
     assert_eq!(text_colours(&plain), 2);
     assert!(text_colours(&highlighted) >= 5);
 }
+
+#[test]
+fn povray_options_are_what_the_arguments_stand_for() {
+    let doc = Document::new(&format!(
+        "{IMPORT}#metadata(povray-options(width: 480, antialias: none, aa-method: none, \
+         aa-threshold: 0.7, start-row: 1.0, end-row: 200, display-gamma: \"SRGB\", \
+         file-gamma: 2.2, quality: none, extra: \"+Q2\")) <result>\n"
+    ));
+    expect![[r#"["Width=480","Height=600","Antialias=off","Antialias_Threshold=0.7","Sampling_Method=1","Antialias_Depth=3","Jitter=on","Display_Gamma=sRGB","File_Gamma=2.2","Start_Row=1.0","End_Row=200","Output_Alpha=off","+Q2"]"#]].assert_eq(&doc.query("<result>").unwrap().to_string());
+}
