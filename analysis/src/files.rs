@@ -71,3 +71,57 @@ impl SourceResolver for Sources {
         self.files.get(file).map(|text| &**text)
     }
 }
+
+/// Files read from directories on disk, searched in order, as POV-Ray's library paths.
+/// Only the CLI and tests use it; the Typst plugin has no file system.
+#[derive(Debug, Clone, Default)]
+pub struct DirectoryFiles {
+    paths: Vec<std::path::PathBuf>,
+}
+
+impl DirectoryFiles {
+    pub fn new(paths: impl IntoIterator<Item = std::path::PathBuf>) -> Self {
+        DirectoryFiles {
+            paths: paths.into_iter().collect(),
+        }
+    }
+}
+
+impl FileSource for DirectoryFiles {
+    fn read(&self, name: &str) -> Option<Arc<str>> {
+        let relative = std::path::Path::new(name);
+        let candidates: Vec<std::path::PathBuf> = if relative.is_absolute() {
+            vec![relative.to_path_buf()]
+        } else {
+            self.paths.iter().map(|dir| dir.join(relative)).collect()
+        };
+        candidates.into_iter().find_map(|path| {
+            let bytes = std::fs::read(path).ok()?;
+            // POV-Ray scenes are often Latin-1; keep them readable rather than refusing them.
+            Some(match String::from_utf8(bytes) {
+                Ok(text) => Arc::from(text),
+                Err(error) => Arc::from(
+                    error
+                        .into_bytes()
+                        .iter()
+                        .map(|&b| char::from(b))
+                        .collect::<String>(),
+                ),
+            })
+        })
+    }
+
+    fn names(&self) -> Vec<String> {
+        let mut names: Vec<String> = self
+            .paths
+            .iter()
+            .filter_map(|dir| std::fs::read_dir(dir).ok())
+            .flatten()
+            .filter_map(|entry| entry.ok()?.file_name().into_string().ok())
+            .filter(|name| name.ends_with(".inc"))
+            .collect();
+        names.sort();
+        names.dedup();
+        names
+    }
+}

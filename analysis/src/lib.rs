@@ -9,7 +9,7 @@ pub mod scene;
 pub mod stdinc;
 
 pub use eval::{Budgets, EvalOptions, Evaluation, Message, Stream, evaluate};
-pub use files::{FileSource, MemoryFiles, Sources};
+pub use files::{DirectoryFiles, FileSource, MemoryFiles, Sources};
 
 /// Checks a scene the way every front end does: the syntax errors of the main file first;
 /// when there are none, the evaluator's findings. The CLI's `check`, the renderer pipeline,

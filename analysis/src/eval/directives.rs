@@ -12,8 +12,7 @@ use syntax::SyntaxKind::*;
 
 impl Evaluator<'_> {
     /// Runs the directive whose `#` was just read.
-    pub fn directive(&mut self, hash: Token) -> Result<()> {
-        let keyword = self.next_raw()?;
+    pub fn directive(&mut self, hash: Token, keyword: Token) -> Result<()> {
         match keyword.kind {
             DECLARE_KW => self.declaration(false),
             LOCAL_KW => self.declaration(true),
@@ -89,6 +88,12 @@ impl Evaluator<'_> {
             FOPEN_KW | FCLOSE_KW | READ_KW | WRITE_KW => {
                 Err(self.unsupported(&keyword, &format!("#{}", self.text(&keyword))))
             }
+            _ if !keyword.kind.is_keyword() && keyword.kind != IDENT => {
+                // POV-Ray ignores a '#' that no directive name follows.
+                self.warn_at(&hash, "stray '#' ignored");
+                self.unget(keyword);
+                Ok(())
+            }
             _ => Err(self.error_at(
                 &keyword,
                 format!("unknown directive '#{}'", self.text(&keyword)),
@@ -156,7 +161,7 @@ impl Evaluator<'_> {
         let first = self.next()?;
         self.unget(first.clone());
         let value = self.rvalue()?;
-        let needs_semicolon = value.is_numeric() || matches!(value, Value::String(_));
+        let needs_semicolon = value.is_numeric();
         if !indices.is_empty() {
             self.assign_element(&name, &text, &indices, value)?;
         } else if let Some(key) = key {
@@ -170,9 +175,11 @@ impl Evaluator<'_> {
             return Err(self
                 .error_at(
                     &first,
-                    "missing ';' after the declaration of a float, vector, color or string",
+                    "missing ';' after the declaration of a float, vector or color",
                 )
-                .with_note_boxed("POV-Ray 3.5 and later require a ';' after these declarations"));
+                .with_note_boxed(
+                    "POV-Ray 3.5 and later require it; strings and objects may omit it",
+                ));
         }
         Ok(())
     }
@@ -252,7 +259,23 @@ impl Evaluator<'_> {
             CAMERA_KW => Ok(Value::Camera(Rc::new(self.camera_value()?))),
             TEXTURE_KW => {
                 self.next()?;
-                Ok(Value::Texture(Rc::new(self.texture_body()?)))
+                let mut texture = self.texture_body()?;
+                // More texture blocks after the first make a layered texture.
+                while self.guarded(|this| this.eat(TEXTURE_KW))? {
+                    let top = self.texture_body()?;
+                    texture = super::object::layer(texture, top);
+                }
+                Ok(Value::Texture(Rc::new(texture)))
+            }
+            STRING | CONCAT_KW | STR_KW | CHR_KW | SUBSTR_KW | STRUPR_KW | STRLWR_KW | VSTR_KW
+            | DATETIME_KW => Ok(Value::String(self.string()?.into())),
+            IDENT
+                if token
+                    .slot
+                    .as_ref()
+                    .is_some_and(|s| matches!(&*s.borrow(), Value::String(_))) =>
+            {
+                Ok(Value::String(self.string()?.into()))
             }
             PIGMENT_KW => {
                 self.next()?;
@@ -299,8 +322,21 @@ impl Evaluator<'_> {
             | DENSITY_MAP_KW | FOG_KW | RAINBOW_KW | SKY_SPHERE_KW => {
                 Err(self.unsupported(&token, &format!("declaring a {}", self.text(&token))))
             }
-            _ => self.expression(),
+            _ => {
+                // An expression is only known to end when the token after it is read; a
+                // `#declare` there must wait until this value is assigned.
+                self.guarded(Self::expression)
+            }
         }
+    }
+
+    /// Runs `read`, which may look at the token after a declaration's value, holding back
+    /// any `#declare` it meets until the value is assigned.
+    fn guarded<T>(&mut self, read: impl FnOnce(&mut Self) -> Result<T>) -> Result<T> {
+        self.declaring.push(self.frames.len());
+        let result = read(self);
+        self.declaring.pop();
+        result
     }
 
     /// `array[N][M] [mixed] { ... }`, after `array`.

@@ -513,6 +513,11 @@ impl Evaluator<'_> {
             components.push(self.to_float(&at, value)?);
             let token = self.next()?;
             match token.kind {
+                // POV-Ray accepts a trailing comma: `<1, 2, 3,>`.
+                COMMA if self.peek_kind()? == GT => {
+                    self.next()?;
+                    break;
+                }
                 COMMA => continue,
                 GT => break,
                 _ => {

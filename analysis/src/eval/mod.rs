@@ -155,6 +155,8 @@ pub(crate) struct Evaluator<'a> {
     scopes: Vec<HashMap<String, Slot>>,
     /// Tokens given back by the parsers, read again before the stream.
     pushed: Vec<Token>,
+    /// The frame depths at which a declaration's value is being read, innermost last.
+    declaring: Vec<usize>,
     /// Files being included, innermost last, to catch cycles.
     include_stack: Vec<FileId>,
     steps: u64,
@@ -186,6 +188,7 @@ impl<'a> Evaluator<'a> {
             frames: Vec::new(),
             scopes: vec![HashMap::new()],
             pushed: Vec::new(),
+            declaring: Vec::new(),
             include_stack: Vec::new(),
             steps: 0,
             loop_iterations: 0,

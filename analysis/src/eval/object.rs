@@ -369,7 +369,7 @@ impl Evaluator<'_> {
         };
         match keyword.kind {
             PIGMENT_KW => *pigment = self.pigment_with(Some(pigment.clone()))?,
-            NORMAL_KW => *normal = Some(self.normal_with(normal.clone())?),
+            NORMAL_KW => *normal = self.normal_with(normal.clone())?,
             _ => *finish = Arc::new(self.finish_body(Some(finish))?),
         }
         object.texture = Some(Arc::new(texture));
@@ -493,7 +493,7 @@ impl Evaluator<'_> {
 }
 
 /// The layer `top` over the texture `below`.
-fn layer(below: Texture, top: Texture) -> Texture {
+pub fn layer(below: Texture, top: Texture) -> Texture {
     let mut layers = match below {
         Texture::Layered(layers) => layers,
         other => vec![other],

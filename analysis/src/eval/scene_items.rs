@@ -27,6 +27,7 @@ impl Evaluator<'_> {
                     self.camera = Some(self.finish_camera(&value));
                 }
                 GLOBAL_SETTINGS_KW => self.global_settings()?,
+                DEFAULT_KW => self.default_directive()?,
                 BACKGROUND_KW => {
                     self.expect(L_BRACE, "'{'")?;
                     let colour = self.scene_colour()?;

@@ -25,11 +25,30 @@ impl Evaluator<'_> {
     pub fn next(&mut self) -> Result<Token> {
         loop {
             if let Some(token) = self.pushed.pop() {
+                // A `#declare` held back while a declaration's value was read runs now.
+                if token.kind == HASH && !self.declaration_pending() {
+                    let keyword = self
+                        .pushed
+                        .pop()
+                        .expect("a held-back '#' comes with its keyword");
+                    self.directive(token, keyword)?;
+                    continue;
+                }
                 return Ok(token);
             }
             let raw = self.next_raw()?;
             match raw.kind {
-                HASH => self.directive(raw)?,
+                HASH => {
+                    let keyword = self.next_raw()?;
+                    if matches!(keyword.kind, DECLARE_KW | LOCAL_KW) && self.declaration_pending() {
+                        // As in POV-Ray, a declaration met while reading another one's value
+                        // (`#declare A = "a"` with no ';' before the next `#declare`) waits
+                        // until that value is assigned.
+                        self.pushed.push(keyword);
+                        return Ok(raw);
+                    }
+                    self.directive(raw, keyword)?;
+                }
                 IDENT => {
                     let name = self.text(&raw).to_owned();
                     let slot = self.lookup(&name);
@@ -47,6 +66,11 @@ impl Evaluator<'_> {
                 _ => return Ok(raw),
             }
         }
+    }
+
+    /// Whether a declaration's value is being read in the current frame.
+    fn declaration_pending(&self) -> bool {
+        self.declaring.last() == Some(&self.frames.len())
     }
 
     /// Gives a token back; the next `next()` returns it again.

@@ -54,7 +54,7 @@ impl Evaluator<'_> {
                     };
                     match token.kind {
                         PIGMENT_KW => *pigment = self.pigment_with(Some(pigment.clone()))?,
-                        NORMAL_KW => *normal = Some(self.normal_with(normal.clone())?),
+                        NORMAL_KW => *normal = self.normal_with(normal.clone())?,
                         _ => *finish = Arc::new(self.finish_body(Some(finish))?),
                     }
                 }
@@ -89,6 +89,14 @@ impl Evaluator<'_> {
     /// `{ ... }` after `pigment`, modifying `base` (an object's current pigment).
     pub fn pigment_with(&mut self, base: Option<Pigment>) -> Result<Pigment> {
         self.expect(L_BRACE, "'{'")?;
+        let pigment = self.pigment_inner(base, R_BRACE)?;
+        self.expect(R_BRACE, "'}'")?;
+        Ok(pigment)
+    }
+
+    /// The inside of a pigment, up to (not including) `end`: `}` for `pigment { }`, `]`
+    /// for a pigment map entry.
+    fn pigment_inner(&mut self, base: Option<Pigment>, end: SyntaxKind) -> Result<Pigment> {
         let first = self.next()?;
         let mut pigment = match first.kind {
             IDENT => match first.slot.as_ref().map(|s| s.borrow().clone()) {
@@ -111,7 +119,9 @@ impl Evaluator<'_> {
                 self.unget(first);
                 Pigment::Solid(self.scene_colour()?)
             }
-            IMAGE_MAP_KW => return Err(self.unsupported(&first, "image_map")),
+            IMAGE_MAP_KW | DENSITY_FILE_KW => {
+                return Err(self.unsupported(&first, self.text(&first)));
+            }
             kind if pattern_keyword(kind) => {
                 let pattern = self.pattern(&first)?;
                 let map = match block_entries(&pattern.kind) {
@@ -130,7 +140,8 @@ impl Evaluator<'_> {
         };
         loop {
             let token = self.next()?;
-            if token.kind == R_BRACE {
+            if token.kind == end {
+                self.unget(token);
                 return Ok(pigment);
             }
             if Self::starts_transform(token.kind) {
@@ -209,9 +220,7 @@ impl Evaluator<'_> {
                 }
             };
             entry.1 = pigment;
-            if !self.eat(COMMA)? {
-                break;
-            }
+            self.eat(COMMA)?;
         }
         Ok(BlendMap { entries })
     }
@@ -392,7 +401,8 @@ impl Evaluator<'_> {
                 R_BRACE => break,
                 L_BRACK => {
                     let value = self.float()?;
-                    if self.eat(COMMA)? {
+                    self.eat(COMMA)?;
+                    if self.float_follows()? {
                         // The old two-value form: [v1, v2 color C1 color C2].
                         let end = self.float()?;
                         let c1 = self.scene_colour()?;
@@ -445,16 +455,10 @@ impl Evaluator<'_> {
                 L_BRACK => {
                     let value = self.float()?;
                     self.eat(COMMA)?;
-                    let inner = self.next()?;
-                    let pigment = match inner.kind {
-                        PIGMENT_KW => self.pigment_body()?,
-                        _ => match inner.slot.as_ref().map(|s| s.borrow().clone()) {
-                            Some(Value::Pigment(p)) => Pigment::clone(&p),
-                            _ => {
-                                self.unget(inner);
-                                Pigment::Solid(self.scene_colour()?)
-                            }
-                        },
+                    let pigment = if self.eat(PIGMENT_KW)? {
+                        self.pigment_body()?
+                    } else {
+                        self.pigment_inner(None, R_BRACK)?
                     };
                     entries.push((value, pigment));
                     self.expect(R_BRACK, "']'")?;
@@ -476,59 +480,50 @@ impl Evaluator<'_> {
         Ok(BlendMap { entries })
     }
 
-    /// `{ ... }` after `normal`, starting from nothing.
+    /// `{ ... }` after `normal`, starting from nothing; a declared normal needs a pattern.
     pub fn normal_body(&mut self) -> Result<Normal> {
-        self.normal_with(None)
+        let at = self.next()?;
+        self.unget(at.clone());
+        self.normal_with(None)?
+            .ok_or_else(|| self.error_at(&at, "this normal has no pattern"))
     }
 
-    /// `{ ... }` after `normal`, modifying `base`.
-    pub fn normal_with(&mut self, base: Option<Normal>) -> Result<Normal> {
+    /// `{ ... }` after `normal`, modifying `base`. `None` when neither gives a pattern
+    /// (`normal { bump_size 2 }` on a plain surface), which perturbs nothing.
+    pub fn normal_with(&mut self, base: Option<Normal>) -> Result<Option<Normal>> {
         self.expect(L_BRACE, "'{'")?;
         let first = self.next()?;
         let mut normal = match first.kind {
             IDENT => match first.slot.as_ref().map(|s| s.borrow().clone()) {
-                Some(Value::Normal(n)) => Normal::clone(&n),
-                _ => {
+                Some(Value::Normal(n)) => Some(Normal::clone(&n)),
+                Some(other) => {
                     return Err(self.error_at(
                         &first,
-                        format!("expected a normal pattern, found {}", self.describe(&first)),
+                        format!("expected a normal, found {}", other.type_name()),
                     ));
                 }
+                None => return Err(self.undeclared(&first)),
             },
+            BUMP_MAP_KW => return Err(self.unsupported(&first, "bump_map")),
             kind if pattern_keyword(kind) => {
                 let pattern = self.pattern(&first)?;
-                let default_bump = match pattern.kind {
-                    PatternKind::Bumps
-                    | PatternKind::Dents
-                    | PatternKind::Ripples
-                    | PatternKind::Waves
-                    | PatternKind::Wrinkles => 0.4,
-                    _ => 0.5,
-                };
+                self.eat(COMMA)?;
                 let bump_size = if self.value_follows()? {
                     self.float()?
                 } else {
-                    default_bump
+                    0.5
                 };
-                Normal {
+                Some(Normal {
                     kind: NormalKind::Pattern {
                         pattern: Box::new(pattern),
                         bump_size,
                     },
                     accuracy: 0.02,
-                }
+                })
             }
             _ => {
-                self.unget(first.clone());
-                match base {
-                    Some(base) => base,
-                    None => {
-                        return Err(self.error_at(
-                            &first,
-                            format!("expected a normal pattern, found {}", self.describe(&first)),
-                        ));
-                    }
-                }
+                self.unget(first);
+                base
             }
         };
         loop {
@@ -538,31 +533,35 @@ impl Evaluator<'_> {
             }
             if Self::starts_transform(token.kind) {
                 let t = self.transformation(&token)?;
-                transform_normal(&mut normal, &t);
+                if let Some(normal) = &mut normal {
+                    transform_normal(normal, &t);
+                }
                 continue;
             }
-            match &mut normal.kind {
-                NormalKind::Pattern { pattern, bump_size } => {
-                    if token.kind == BUMP_SIZE_KW {
-                        *bump_size = self.float()?;
-                        continue;
-                    }
+            if matches!(token.kind, SLOPE_MAP_KW | NORMAL_MAP_KW) {
+                return Err(self.unsupported(&token, self.text(&token)));
+            }
+            if token.kind == BUMP_SIZE_KW || token.kind == ACCURACY_KW {
+                let value = self.float()?;
+                if let Some(normal) = &mut normal {
                     if token.kind == ACCURACY_KW {
-                        normal.accuracy = self.float()?;
-                        continue;
-                    }
-                    if matches!(token.kind, SLOPE_MAP_KW | NORMAL_MAP_KW) {
-                        return Err(self.unsupported(&token, self.text(&token)));
-                    }
-                    if self.pattern_modifier(pattern, &token)? {
-                        continue;
+                        normal.accuracy = value;
+                    } else if let NormalKind::Pattern { bump_size, .. } = &mut normal.kind {
+                        *bump_size = value;
                     }
                 }
-                NormalKind::Map { pattern, .. } => {
-                    if self.pattern_modifier(pattern, &token)? {
-                        continue;
-                    }
+                continue;
+            }
+            let pattern = match normal.as_mut().map(|n| &mut n.kind) {
+                Some(NormalKind::Pattern { pattern, .. } | NormalKind::Map { pattern, .. }) => {
+                    Some(pattern)
                 }
+                None => None,
+            };
+            if let Some(pattern) = pattern
+                && self.pattern_modifier(pattern, &token)?
+            {
+                continue;
             }
             return Err(self.error_at(
                 &token,
@@ -572,6 +571,19 @@ impl Evaluator<'_> {
                 ),
             ));
         }
+    }
+
+    /// Whether a number or float identifier comes next (and so no colour does).
+    fn float_follows(&mut self) -> Result<bool> {
+        let token = self.next()?;
+        let starts = token.kind == NUMBER
+            || (token.kind == IDENT
+                && token
+                    .slot
+                    .as_ref()
+                    .is_some_and(|s| matches!(&*s.borrow(), Value::Float(_))));
+        self.unget(token);
+        Ok(starts)
     }
 
     /// Whether a float expression starts at the next token.
@@ -749,7 +761,7 @@ impl Evaluator<'_> {
                     let mut f = Finish::clone(&f);
                     match token.kind {
                         PIGMENT_KW => p = self.pigment_with(Some(p))?,
-                        NORMAL_KW => n = Some(self.normal_with(n)?),
+                        NORMAL_KW => n = self.normal_with(n)?,
                         _ => f = self.finish_body(Some(&f))?,
                     }
                     self.default_texture = Texture::Plain {
