@@ -114,8 +114,7 @@ impl Builder {
         }
         let m = Material::from_scene(texture).map_err(fail)?;
         material::check_finish(&m.finish).map_err(fail)?;
-        let colour = m.pigment.colour_at();
-        if colour.filter != 0.0 || colour.transmit != 0.0 {
+        if m.pigment.may_transmit() {
             return Err(fail(
                 "not supported yet: transparent pigments (filter/transmit)".into(),
             ));

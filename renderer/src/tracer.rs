@@ -82,7 +82,7 @@ impl<'w> Tracer<'w> {
             normal = -normal;
         }
         let material = &leaf.material;
-        let pigment = material.pigment.colour_at();
+        let pigment = material.pigment.colour_at(p);
         let finish = &*material.finish;
         if !self.world.quality.lighting {
             return pigment.rgb;

@@ -1,0 +1,150 @@
+//! Solid noise for the noise-based patterns: gradient (Perlin) noise on the integer lattice
+//! with a fixed permutation, scaled to 0..1 around 0.5 as POV-Ray's noise is, and the
+//! turbulence sums built from it. The values are not POV-Ray's bit for bit; they share its
+//! range, mean and spatial frequency (one feature per unit), which the fidelity tests
+//! check statistically.
+
+use glam::DVec3;
+
+/// A fixed permutation of 0..256, generated once by a small linear congruential shuffle so
+/// that the noise is the same on every platform and run.
+fn permutation() -> &'static [u8; 512] {
+    static TABLE: std::sync::OnceLock<[u8; 512]> = std::sync::OnceLock::new();
+    TABLE.get_or_init(|| {
+        let mut p: [u8; 256] = std::array::from_fn(|i| i as u8);
+        let mut state: u32 = 0x2545_f491;
+        for i in (1..256).rev() {
+            state = state.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            let j = (state >> 8) as usize % (i + 1);
+            p.swap(i, j);
+        }
+        std::array::from_fn(|i| p[i & 255])
+    })
+}
+
+fn fade(t: f64) -> f64 {
+    t * t * t * (t * (t * 6.0 - 15.0) + 10.0)
+}
+
+fn grad(hash: u8, x: f64, y: f64, z: f64) -> f64 {
+    // The twelve edge directions of a cube (with four repeated), as in improved noise.
+    let h = hash & 15;
+    let u = if h < 8 { x } else { y };
+    let v = if h < 4 {
+        y
+    } else if h == 12 || h == 14 {
+        x
+    } else {
+        z
+    };
+    (if h & 1 == 0 { u } else { -u }) + (if h & 2 == 0 { v } else { -v })
+}
+
+/// Signed gradient noise, roughly in -1..1, zero at lattice points.
+pub fn signed(p: DVec3) -> f64 {
+    if !p.is_finite() {
+        return 0.0;
+    }
+    let perm = permutation();
+    let f = p.floor();
+    let (xi, yi, zi) = (
+        (f.x.rem_euclid(256.0)) as usize,
+        (f.y.rem_euclid(256.0)) as usize,
+        (f.z.rem_euclid(256.0)) as usize,
+    );
+    let (x, y, z) = (p.x - f.x, p.y - f.y, p.z - f.z);
+    let (u, v, w) = (fade(x), fade(y), fade(z));
+    let a = perm[xi] as usize + yi;
+    let (aa, ab) = (perm[a] as usize + zi, perm[a + 1] as usize + zi);
+    let b = perm[xi + 1] as usize + yi;
+    let (ba, bb) = (perm[b] as usize + zi, perm[b + 1] as usize + zi);
+    let lerp = |t: f64, a: f64, b: f64| a + t * (b - a);
+    lerp(
+        w,
+        lerp(
+            v,
+            lerp(u, grad(perm[aa], x, y, z), grad(perm[ba], x - 1.0, y, z)),
+            lerp(
+                u,
+                grad(perm[ab], x, y - 1.0, z),
+                grad(perm[bb], x - 1.0, y - 1.0, z),
+            ),
+        ),
+        lerp(
+            v,
+            lerp(
+                u,
+                grad(perm[aa + 1], x, y, z - 1.0),
+                grad(perm[ba + 1], x - 1.0, y, z - 1.0),
+            ),
+            lerp(
+                u,
+                grad(perm[ab + 1], x, y - 1.0, z - 1.0),
+                grad(perm[bb + 1], x - 1.0, y - 1.0, z - 1.0),
+            ),
+        ),
+    )
+}
+
+/// POV-Ray's `Noise`: 0..1 with mean 0.5.
+pub fn noise(p: DVec3) -> f64 {
+    (0.5 + 0.5 * signed(p)).clamp(0.0, 1.0)
+}
+
+/// A vector of three decorrelated signed noises, for turbulence displacements.
+pub fn vector(p: DVec3) -> DVec3 {
+    DVec3::new(
+        signed(p),
+        signed(p + DVec3::new(31.416, -47.853, 12.793)),
+        signed(p + DVec3::new(-23.172, 18.581, 61.913)),
+    )
+}
+
+/// The classic turbulence displacement: octaves of vector noise, each `lambda` times finer
+/// and `omega` times weaker than the last.
+pub fn turbulence(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
+    let mut sum = DVec3::ZERO;
+    let (mut scale, mut amplitude) = (1.0, 1.0);
+    for _ in 0..octaves.max(1) {
+        sum += vector(p * scale) * amplitude;
+        scale *= lambda;
+        amplitude *= omega;
+    }
+    sum
+}
+
+/// Scalar turbulence: octaves of |noise| as the granite-like patterns sum them.
+pub fn scalar_turbulence(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> f64 {
+    let mut sum = 0.0;
+    let (mut scale, mut amplitude) = (1.0, 1.0);
+    for _ in 0..octaves.max(1) {
+        sum += signed(p * scale).abs() * amplitude;
+        scale *= lambda;
+        amplitude *= omega;
+    }
+    sum
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn noise_has_povray_range_and_mean() {
+        let mut sum = 0.0;
+        let n = 20_000;
+        for i in 0..n {
+            let p = DVec3::new(
+                i as f64 * 0.173,
+                (i % 97) as f64 * 0.311,
+                (i % 13) as f64 * 0.71,
+            );
+            let v = noise(p);
+            assert!((0.0..=1.0).contains(&v));
+            sum += v;
+        }
+        let mean = sum / n as f64;
+        assert!((mean - 0.5).abs() < 0.02, "{mean}");
+        assert_eq!(noise(DVec3::new(3.0, 4.0, 5.0)), 0.5);
+    }
+}
