@@ -7,7 +7,7 @@ macro_rules! define_kinds {
     (
         tokens { $($(#[$tok_meta:meta])* $tok:ident),* $(,)? }
         keywords { $($kw:ident => $text:literal),* $(,)? }
-        nodes { $($node:ident),* $(,)? }
+        nodes { $($(#[$node_meta:meta])* $node:ident),* $(,)? }
     ) => {
         /// Every kind of token and node. Keywords end in `_KW`.
         #[allow(non_camel_case_types)]
@@ -16,7 +16,7 @@ macro_rules! define_kinds {
         pub enum SyntaxKind {
             $($(#[$tok_meta])* $tok,)*
             $($kw,)*
-            $($node,)*
+            $($(#[$node_meta])* $node,)*
         }
 
         /// The reserved words with their kinds, sorted by text.
@@ -84,6 +84,8 @@ define_kinds! {
         HASH,
         /// A character that starts no token, or an unterminated string or comment.
         ERROR,
+        /// The end of the input as the parser sees it; never stored in a tree.
+        EOF,
     }
     keywords {
     AA_LEVEL_KW => "aa_level",
@@ -225,6 +227,7 @@ define_kinds! {
     EXP_KW => "exp",
     EXPAND_THRESHOLDS_KW => "expand_thresholds",
     EXPONENT_KW => "exponent",
+    EXR_KW => "exr",
     EXTERIOR_KW => "exterior",
     EXTINCTION_KW => "extinction",
     FACE_INDICES_KW => "face_indices",
@@ -268,6 +271,7 @@ define_kinds! {
     GRAY_KW => "gray",
     GRAY_THRESHOLD_KW => "gray_threshold",
     GREEN_KW => "green",
+    HDR_KW => "hdr",
     HEIGHT_FIELD_KW => "height_field",
     HEXAGON_KW => "hexagon",
     HF_GRAY_16_KW => "hf_gray_16",
@@ -594,7 +598,83 @@ define_kinds! {
     }
     nodes {
         SOURCE_FILE,
+        /// Tokens the parser could not place, with one error for the run.
         ERROR_NODE,
+
+        // Statements and blocks: a keyword, then `{ items }`.
+        OBJECT,
+        CAMERA,
+        LIGHT_SOURCE,
+        TEXTURE,
+        PIGMENT,
+        NORMAL,
+        FINISH,
+        INTERIOR,
+        MEDIA,
+        DENSITY,
+        GLOBAL_SETTINGS,
+        /// background, fog, rainbow, sky_sphere.
+        ATMOSPHERIC,
+        TRANSFORM,
+        FUNCTION,
+        SPLINE,
+        ARRAY,
+        DICTIONARY,
+        DICTIONARY_ENTRY,
+        /// Any other keyword block: color_map, radiosity, warp, photons and the like.
+        BLOCK,
+        /// `{ items }` without a keyword: the rows of an array initialiser.
+        BRACE_GROUP,
+        /// A keyword and its optional argument: `translate x`, `hollow`, `ambient 0.1`.
+        PROPERTY,
+        /// `[ 0.5 color Red ]` in a color_map, pigment_map and the other maps.
+        MAP_ENTRY,
+        /// The dimensions of an array: `[3][4]`.
+        ARRAY_DIMENSIONS,
+        PARAM_LIST,
+        PARAM,
+        /// A defining occurrence of an identifier.
+        NAME,
+        ARG_LIST,
+
+        // Expressions.
+        LITERAL,
+        NAME_REF,
+        CALL,
+        VECTOR,
+        PAREN_EXPR,
+        PREFIX_EXPR,
+        BIN_EXPR,
+        TERNARY_EXPR,
+        DOT_EXPR,
+        INDEX_EXPR,
+        /// `rgb <1,0,0> filter 0.5`, `color Red`: a colour keyword and its operands.
+        COLOR,
+
+        // Directives.
+        DECLARE,
+        UNDEF,
+        MACRO,
+        /// A macro's body: a token sequence, with structure when it parses on its own.
+        MACRO_BODY,
+        IF,
+        WHILE,
+        FOR,
+        SWITCH,
+        /// `#else`, `#elseif (c)`, `#case (c)`, `#range (a, b)` and the items they govern.
+        BRANCH,
+        DIRECTIVE_BODY,
+        INCLUDE,
+        VERSION,
+        DEFAULT,
+        /// `#debug`, `#warning`, `#error`, `#render`, `#statistics`.
+        MESSAGE,
+        /// `#fopen`, `#fclose`, `#read`, `#write`.
+        FILE_IO,
+        BREAK,
+        /// Conditional tokens kept as they are: the branches of an `#if` whose braces only
+        /// balance across its `#end`, other than the branch parsed in line, and its `#end`.
+        INACTIVE,
     }
 }
 

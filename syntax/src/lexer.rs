@@ -211,9 +211,11 @@ impl Lexer<'_> {
         BLOCK_COMMENT
     }
 
-    /// A string runs to its closing quote; a line break before it ends the token so that
-    /// one missing quote does not swallow the rest of the file.
+    /// A string runs to its closing quote, across line breaks as in POV-Ray. One that
+    /// is never closed ends at its first line break, so that a missing quote at the end
+    /// does not swallow the rest of the file.
     fn string(&mut self, start: usize) -> SyntaxKind {
+        let mut first_line_break = None;
         while self.pos < self.bytes.len() {
             match self.bytes[self.pos] {
                 b'"' => {
@@ -231,9 +233,15 @@ impl Lexer<'_> {
                         .map_or(1, char::len_utf8);
                     self.pos += width;
                 }
-                b'\n' | b'\r' => break,
+                b'\n' | b'\r' => {
+                    first_line_break.get_or_insert(self.pos);
+                    self.pos += 1;
+                }
                 _ => self.pos += 1,
             }
+        }
+        if let Some(line_break) = first_line_break {
+            self.pos = line_break;
         }
         self.error(start, self.pos, "unterminated string");
         STRING
@@ -410,6 +418,21 @@ mod tests {
         assert_eq!(value, "a\"b\\c\nd\\q");
         assert_eq!(problems.len(), 1);
         assert_eq!(problems[0].1, "unknown escape sequence '\\q'");
+    }
+
+    #[test]
+    fn strings_span_lines() {
+        check(
+            "\"a\nb\" \"open\nc",
+            expect![[r#"
+                STRING "\"a\nb\""
+                WHITESPACE " "
+                STRING "\"open"
+                WHITESPACE "\n"
+                IDENT "c"
+                error 6..11: unterminated string
+            "#]],
+        );
     }
 
     #[test]

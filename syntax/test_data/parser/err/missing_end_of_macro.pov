@@ -1,0 +1,5 @@
+#macro Ring(R)
+  torus { R, 0.1 }
+
+sphere { 0, 1 }
+camera { }

@@ -1,0 +1,3 @@
+#declare = 1;
+#declare C 3;
+#declare E = ;

@@ -1,0 +1,3 @@
+#else
+sphere { 0, 1 }
+#end

@@ -1,0 +1,1 @@
+sphere { <0, 0, 0, 1 pigment { Red } }

@@ -1,0 +1,3 @@
+Row(1, sphere { 0, 1 }, pigment { Red })
+Field(HF, off, off <100, 100>, on)
+#declare V = vrotate(x, <0, 90, 0>);

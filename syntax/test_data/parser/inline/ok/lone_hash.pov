@@ -1,0 +1,2 @@
+#Macro(1)
+camera { look_at 0 # }

@@ -1,0 +1,3 @@
+#macro Open() union { #end
+#macro Close() } #end
+#macro Tail() , 1 } #end
