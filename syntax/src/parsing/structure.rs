@@ -194,8 +194,8 @@ impl Pass<'_> {
             .filter_map(|i| directive_keyword(self.kinds, i).map(|kw| (i, kw)))
             .collect();
         let order = self.match_directives_with(&hashes, false);
-        let clean = self.groups.iter().all(|g| g.end.is_some())
-            && !self.marks.contains(&Mark::Stray);
+        let clean =
+            self.groups.iter().all(|g| g.end.is_some()) && !self.marks.contains(&Mark::Stray);
         if clean {
             return order;
         }
