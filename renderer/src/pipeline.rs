@@ -14,6 +14,15 @@ pub struct Rendered {
     /// `#debug` text, in order.
     pub messages: Vec<Message>,
     pub warnings: Vec<Diagnostic>,
+    /// Every file the scene read, to print the warnings with.
+    pub sources: Sources,
+}
+
+impl Rendered {
+    /// The warnings as gcc-style text with source excerpts; empty when there are none.
+    pub fn warnings_to_human(&self) -> String {
+        syntax::diagnostic::render_human(&self.warnings, &self.sources)
+    }
 }
 
 /// Why a scene did not render: its errors (and any warnings before them).
@@ -57,6 +66,7 @@ pub fn render_source(
             image,
             messages: evaluation.messages,
             warnings: evaluation.diagnostics,
+            sources: evaluation.sources,
         }),
         Err(error) => {
             let diagnostic = match error.origin {
