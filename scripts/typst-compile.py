@@ -56,12 +56,18 @@ def main() -> int:
             print(found)
         else:
             compiler.compile(output=args.output, ppi=args.ppi)
-    except typst.TypstError as error:
+    except (typst.TypstError, RuntimeError) as error:
+        # Queries fail with a plain RuntimeError when the selector finds nothing.
+        message = getattr(error, "message", str(error))
         if args.json_errors:
-            report = {"message": error.message, "hints": error.hints, "diagnostic": error.diagnostic}
+            report = {
+                "message": message,
+                "hints": getattr(error, "hints", []),
+                "diagnostic": getattr(error, "diagnostic", f"error: {message}"),
+            }
             print(json.dumps(report), file=sys.stderr)
         else:
-            print(error.diagnostic, file=sys.stderr)
+            print(getattr(error, "diagnostic", f"error: {message}"), file=sys.stderr)
         return 1
     if args.timings:
         print(f"compiled {args.input} in {time.perf_counter() - started:.3f} s", file=sys.stderr)

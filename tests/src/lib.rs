@@ -1,6 +1,7 @@
 //! Shared support for the integration tests in `tests/tests/`: where the workspace and its
 //! build output are, the `povrayst` binary, and the Typst compiler with the package.
 
+pub mod broken_scenes;
 pub mod fidelity;
 pub mod image_compare;
 pub mod typst_compiler;

@@ -52,6 +52,15 @@ pub struct Message {
 }
 
 impl Response {
+    /// An answer with an error and nothing else.
+    pub fn error(text: String) -> Response {
+        Response {
+            outcome: Err(text),
+            messages: Vec::new(),
+            warnings: String::new(),
+        }
+    }
+
     pub fn encode(&self) -> Vec<u8> {
         let mut e = Encoder::new(Vec::new());
         self.write(&mut e)

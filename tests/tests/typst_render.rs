@@ -1,0 +1,242 @@
+//! Renders through the Typst package and the real Typst compiler: the image it hands Typst
+//! (size, channels, alpha, partial renders), the options that reach the renderer, includes,
+//! messages, the show rule, and the exact text of scene errors.
+
+use expect_test::expect;
+use serde_json::Value;
+use tests::typst_compiler::Document;
+
+const IMPORT: &str = "#import \"@local/povrayst:0.1.0\": *\n";
+
+/// A small lit sphere on a transparent background, centred.
+const SPHERE: &str = "background { color rgbt <0, 0, 0, 1> }
+camera { location <0, 0, -4> look_at 0 angle 40 }
+light_source { <3, 4, -5> rgb 1 }
+sphere { 0, 1 pigment { rgb <1, 0.5, 0.2> } }
+";
+
+/// What `try-render(scene, ARGS)` produced, as seen from Typst: size, encoding, the alpha
+/// of the top-left and centre pixels, the rows with any non-zero sample (how many, and the
+/// first), and the error text.
+fn probe(scene: &str, args: &str) -> Value {
+    let doc = Document::new(&format!(
+        "{IMPORT}#let scene = read(\"scene.pov\")
+#let r = try-render(scene{args})
+#let channels = if r.encoding == \"rgba8\" {{ 4 }} else {{ 3 }}
+#let sample(x, y, c) = r.pixels.at((y * r.width + x) * channels + c)
+#let lit = if r.error != none {{ () }} else {{
+  range(r.height).filter(y => range(r.width * channels).any(i => r.pixels.at(y * r.width * channels + i) != 0))
+}}
+#metadata((
+  width: r.width, height: r.height, encoding: r.encoding, error: r.error,
+  bytes: if r.pixels != none {{ r.pixels.len() }},
+  corner-alpha: if r.error == none and channels == 4 {{ sample(0, 0, 3) }},
+  centre-alpha: if r.error == none and channels == 4 {{ sample(calc.quo(r.width, 2), calc.quo(r.height, 2), 3) }},
+  lit-rows: lit.len(),
+  first-lit-row: lit.at(0, default: none),
+)) <result>
+"
+    ))
+    .with_file("scene.pov", scene);
+    doc.query("<result>").expect("the probe document compiles")
+}
+
+#[test]
+fn an_opaque_render_is_rgb_of_the_requested_size() {
+    let result = probe(SPHERE, ", width: 32, height: 24");
+    assert_eq!(result["error"], Value::Null);
+    assert_eq!(result["width"], 32);
+    assert_eq!(result["height"], 24);
+    assert_eq!(result["encoding"], "rgb8");
+    assert_eq!(result["bytes"], 32 * 24 * 3);
+}
+
+#[test]
+fn output_alpha_keeps_a_transparent_background() {
+    let result = probe(SPHERE, ", width: 32, height: 24, output-alpha: true");
+    assert_eq!(result["encoding"], "rgba8");
+    assert_eq!(result["bytes"], 32 * 24 * 4);
+    assert_eq!(result["corner-alpha"], 0);
+    assert_eq!(result["centre-alpha"], 255);
+}
+
+#[test]
+fn extra_options_come_after_the_arguments_and_win() {
+    let result = probe(
+        SPHERE,
+        ", width: 32, height: 24, extra: (\"+W20\", \"Height=10\")",
+    );
+    assert_eq!(
+        (result["width"].clone(), result["height"].clone()),
+        (20.into(), 10.into())
+    );
+}
+
+/// A scene that covers every pixel, so that the rows drawn are the rows with colour.
+const FULL: &str = "background { rgb 1 }\ncamera { location -4*z look_at 0 }\n";
+
+#[test]
+fn a_partial_render_draws_only_its_rows() {
+    let full = probe(FULL, ", width: 32, height: 24");
+    let pixels = probe(FULL, ", width: 32, height: 24, start-row: 9, end-row: 16");
+    // POV-Ray 3.7 renders rows 10 to 24 for `Start_Row=0.375 End_Row=1.0` at this size.
+    let fraction = probe(
+        FULL,
+        ", width: 32, height: 24, start-row: 0.375, end-row: 1.0",
+    );
+    let rows = |result: &Value| (result["first-lit-row"].clone(), result["lit-rows"].clone());
+    assert_eq!(rows(&full), (0.into(), 24.into()));
+    assert_eq!(rows(&pixels), (8.into(), 8.into()));
+    assert_eq!(rows(&fraction), (9.into(), 15.into()));
+    assert_eq!(
+        (pixels["width"].clone(), pixels["height"].clone()),
+        (32.into(), 24.into())
+    );
+}
+
+#[test]
+fn none_keeps_povray_defaults_and_every_argument_is_accepted() {
+    let args = ", width: 16, height: 12, quality: none, antialias: none, aa-threshold: 0.2, \
+        aa-method: 1, aa-depth: 2, aa-jitter: false, aa-jitter-amount: 0.5, aa-gamma: 2.2, \
+        display-gamma: \"srgb\", file-gamma: 1.0, max-trace-level: 4, bounding: true, \
+        bounding-threshold: 3, remove-bounds: true, split-unions: false, start-column: 1, \
+        end-column: 1.0, output-alpha: none, compression: 6, includes: (:), files: (:)";
+    let result = probe(SPHERE, args);
+    assert_eq!(result["error"], Value::Null, "{result}");
+    assert_eq!(result["encoding"], "rgb8");
+}
+
+#[test]
+fn includes_are_read_by_the_evaluator() {
+    let doc = Document::new(&format!(
+        "{IMPORT}#let r = try-render(read(\"scene.pov\"), width: 8, height: 6,
+  includes: (\"materials.inc\": read(\"materials.inc\"), \"inner.inc\": \"#declare R = 1;\"))
+#metadata(r.error) <result>
+"
+    ))
+    .with_file(
+        "scene.pov",
+        "#include \"materials.inc\"\ncamera { location -4*z look_at 0 }\nsphere { 0, R texture { Copper } }\n",
+    )
+    .with_file(
+        "materials.inc",
+        "#include \"inner.inc\"\n#declare Copper = texture { pigment { rgb <0.8, 0.4, 0.2> } }\n",
+    );
+    assert_eq!(doc.query("<result>").unwrap(), Value::Null);
+}
+
+#[test]
+fn messages_returns_the_debug_output() {
+    let doc = Document::new(&format!(
+        "{IMPORT}#metadata(messages(\"#debug \\\"one\\\\n\\\"\\n#declare N = 2;\\n#debug concat(\\\"N = \\\", str(N, 0, 0), \\\"\\\\n\\\")\\nsphere {{ 0, 1 }}\", width: 4, height: 3)) <result>\n"
+    ));
+    expect![[r#"[{"stream":"debug","text":"one\n"},{"stream":"debug","text":"N = 2\n"}]"#]]
+        .assert_eq(&doc.query("<result>").unwrap().to_string());
+}
+
+#[test]
+fn the_show_rule_renders_povray_blocks() {
+    let doc = Document::new(&format!(
+        "{IMPORT}#set page(width: auto, height: auto)
+#show raw.where(lang: \"povray\"): it => pov(it, width: 8, height: 6)
+```povray
+camera {{ location -4*z look_at 0 }}
+sphere {{ 0, 1 pigment {{ rgb 1 }} }}
+```
+#context [#metadata(query(image).len()) <result>]
+"
+    ));
+    assert_eq!(doc.query("<result>").unwrap(), 1);
+    let plain = Document::new(&format!(
+        "{IMPORT}#show raw.where(lang: \"povray\"): pov\n```povray\nsphere {{ 0, 1 }}\n```\n"
+    ));
+    plain
+        .compile()
+        .expect("a povray block with the default options renders");
+}
+
+/// The message of rendering `scene` (with `args`) in a document.
+fn render_error(scene: &str, args: &str) -> String {
+    Document::new(&format!("{IMPORT}#render(read(\"scene.pov\"){args})\n"))
+        .with_file("scene.pov", scene)
+        .compile_error()
+}
+
+#[test]
+fn scene_errors_are_the_gcc_style_report() {
+    let cases = [
+        ("unclosed brace", "sphere { 0, 1\n  pigment { rgb 1 }\n", ""),
+        (
+            "undeclared identifier",
+            "#declare Radius = 1;\nsphere { 0, Raduis }\n",
+            "",
+        ),
+        ("missing #end", "#if (1)\n  sphere { 0, 1 }\n", ""),
+        (
+            "#error",
+            "#declare N = 3;\n#error concat(\"N is \", str(N, 0, 0))\n",
+            "",
+        ),
+        (
+            "missing include",
+            "#include \"materials.inc\"\n",
+            ", includes: (\"other.inc\": \"\")",
+        ),
+        (
+            "error inside an include",
+            "#include \"materials.inc\"\nsphere { 0, 1 texture { Copper } }\n",
+            ", includes: (\"materials.inc\": \"#declare Copper = texture {\\n  pigment { color\\n  rgb Tint }\\n}\\n\")",
+        ),
+        (
+            "unknown extra option",
+            "sphere { 0, 1 }\n",
+            ", extra: (\"+A0.1\", \"Frobnicate=on\")",
+        ),
+    ];
+    let reports: Vec<String> = cases
+        .iter()
+        .map(|(what, scene, args)| format!("--- {what}\n{}", render_error(scene, args)))
+        .collect();
+    expect![[r#"
+        --- unclosed brace
+        plugin errored with: scene.pov:3:1: error: expected an object modifier or '}' in sphere, found end of file
+            3 | 
+              | ^
+        scene.pov:1:8: note: the object starts here
+            1 | sphere { 0, 1
+              |        ^
+
+        --- undeclared identifier
+        plugin errored with: scene.pov:2:13: error: undeclared identifier 'Raduis'
+            2 | sphere { 0, Raduis }
+              |             ^~~~~~
+        note: did you mean 'Radius'?
+
+        --- missing #end
+        plugin errored with: scene.pov:1:1: error: missing #end for this #if
+            1 | #if (1)
+              | ^
+
+        --- #error
+        plugin errored with: scene.pov:2:1: error: N is 3
+            2 | #error concat("N is ", str(N, 0, 0))
+              | ^
+
+        --- missing include
+        plugin errored with: scene.pov:1:10: error: cannot find include file 'materials.inc'
+            1 | #include "materials.inc"
+              |          ^~~~~~~~~~~~~~~
+        note: files available: other.inc
+        note: standard includes: colors.inc, consts.inc
+
+        --- error inside an include
+        plugin errored with: materials.inc:3:7: error: undeclared identifier 'Tint'
+            3 |   rgb Tint }
+              |       ^~~~
+        scene.pov:1:10: note: in 'materials.inc' included here
+            1 | #include "materials.inc"
+              |          ^~~~~~~~~~~~~~~
+
+        --- unknown extra option
+        plugin errored with: extra: option `Frobnicate=on`: unknown option"#]].assert_eq(&reports.join("\n"));
+}

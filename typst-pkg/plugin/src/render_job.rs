@@ -1,0 +1,98 @@
+//! One render request from start to finish: the options, the files the scene may read, the
+//! renderer's pipeline, and the answer for Typst. Everything that can go wrong with the
+//! scene or its options becomes an error answer, never a panic.
+
+use crate::request::Request;
+use crate::response::{Encoding, Message, Pixels, Response};
+use analysis::{MemoryFiles, Stream};
+use renderer::{Image, RenderOptions};
+
+/// The name diagnostics give the main scene; includes keep the names the scene uses.
+pub const SCENE_NAME: &str = "scene.pov";
+
+/// Renders the request's scene.
+pub fn run(request: &Request) -> Response {
+    let outcome = options(request).and_then(|options| {
+        let files = files(request)?;
+        Ok((options, files))
+    });
+    let (options, files) = match outcome {
+        Ok(prepared) => prepared,
+        Err(text) => return Response::error(text),
+    };
+    match renderer::pipeline::render_source(SCENE_NAME, &files, &options) {
+        Ok(rendered) => Response {
+            outcome: Ok(pixels(&rendered.image)),
+            messages: rendered
+                .messages
+                .iter()
+                .map(|message| Message {
+                    stream: match message.stream {
+                        Stream::Debug => "debug",
+                    },
+                    text: message.text.clone(),
+                })
+                .collect(),
+            warnings: rendered.warnings_to_human(),
+        },
+        Err(failure) => Response::error(failure.to_human()),
+    }
+}
+
+/// The package defaults, then the options from the keyword arguments, then `extra`.
+fn options(request: &Request) -> Result<RenderOptions, String> {
+    let mut options = RenderOptions::default();
+    for option in &request.options {
+        options.apply_povray_option(option)?;
+    }
+    for option in &request.extra {
+        options
+            .apply_povray_option(option)
+            .map_err(|error| format!("extra: {error}"))?;
+    }
+    Ok(options)
+}
+
+/// The scene and its includes as the evaluator reads them. Text data files (`#fopen`) join
+/// the includes; binary assets wait for image maps, height fields and fonts.
+fn files(request: &Request) -> Result<MemoryFiles, String> {
+    let mut files = MemoryFiles::new();
+    files.insert(SCENE_NAME, request.scene.as_str());
+    for (name, text) in &request.includes {
+        files.insert(name.as_str(), text.as_str());
+    }
+    for (name, bytes) in &request.files {
+        match std::str::from_utf8(bytes) {
+            Ok(text) => files.insert(name.as_str(), text),
+            Err(_) => {
+                return Err(format!(
+                    "files: {name}: not supported yet: binary files (image maps, height fields, fonts)"
+                ));
+            }
+        };
+    }
+    Ok(files)
+}
+
+/// The image as 8-bit samples, quantised as the PNG writer quantises them.
+fn pixels(image: &Image) -> Pixels {
+    let channels = if image.has_alpha { 4 } else { 3 };
+    let mut samples = Vec::with_capacity(image.pixels.len() * channels);
+    for pixel in &image.pixels {
+        samples.extend(
+            pixel[..channels]
+                .iter()
+                .map(|value| (value.clamp(0.0, 1.0) * 255.0).round() as u8),
+        );
+    }
+    Pixels {
+        width: image.width,
+        height: image.height,
+        encoding: if image.has_alpha {
+            Encoding::Rgba8
+        } else {
+            Encoding::Rgb8
+        },
+        samples,
+    }
+}
