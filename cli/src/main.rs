@@ -1,6 +1,58 @@
-//! `povrayst`: render, check and format POV-Ray scenes, and run the language server.
+//! `povrayst`: render and check POV-Ray scenes.
+//!
+//! Exit status: 0 when all went well, 1 when a scene has errors, 2 for usage and I/O errors.
 
-fn main() {
-    eprintln!("povrayst: no commands yet");
-    std::process::exit(2);
+mod commands;
+mod disk_files;
+mod render_flags;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "povrayst",
+    version,
+    about = "POV-Ray scenes: render, check, inspect"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Render a scene to a PNG file.
+    Render(commands::render::RenderArgs),
+    /// Report a scene's errors and warnings, gcc-style, on stderr.
+    Check(commands::check::CheckArgs),
+}
+
+/// How a command ended, as the process's exit status.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Outcome {
+    Success,
+    /// A scene has errors (they have been printed).
+    SceneErrors,
+    /// Bad arguments or a file that cannot be read or written (said on stderr).
+    UsageOrIo,
+}
+
+impl From<Outcome> for ExitCode {
+    fn from(outcome: Outcome) -> ExitCode {
+        ExitCode::from(match outcome {
+            Outcome::Success => 0,
+            Outcome::SceneErrors => 1,
+            Outcome::UsageOrIo => 2,
+        })
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.command {
+        Command::Render(args) => commands::render::run(&args),
+        Command::Check(args) => commands::check::run(&args),
+    }
+    .into()
 }

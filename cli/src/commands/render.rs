@@ -1,0 +1,105 @@
+//! `povrayst render SCENE -o OUT.png`: renders a scene to a PNG file with the options of the
+//! Typst package (`--width`, `--aa-threshold`, ...) and POV-Ray's own (`--extra +A0.1`).
+//! The file appears whole or not at all: it is written beside its destination and renamed.
+
+use crate::Outcome;
+use crate::disk_files::DiskFiles;
+use crate::render_flags::RenderFlags;
+use clap::Args;
+use renderer::RenderOptions;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+#[derive(Args, Debug)]
+pub struct RenderArgs {
+    /// The scene file.
+    scene: PathBuf,
+    /// The PNG file to write; the scene's name with `.png` by default.
+    #[arg(short, long, value_name = "OUT.png")]
+    output: Option<PathBuf>,
+    #[command(flatten)]
+    flags: RenderFlags,
+    /// A POV-Ray command-line or .ini option (`+A0.1`, `Jitter=off`), applied after the
+    /// flags; repeat for more.
+    #[arg(long, value_name = "OPTION", allow_hyphen_values = true)]
+    extra: Vec<String>,
+    /// A directory to search for include files after the scene's own (POV-Ray's +L).
+    #[arg(short = 'L', long = "library-path", value_name = "DIR")]
+    library_paths: Vec<PathBuf>,
+}
+
+pub fn run(args: &RenderArgs) -> Outcome {
+    let options = match render_options(args) {
+        Ok(options) => options,
+        Err(error) => {
+            eprintln!("povrayst: {error}");
+            return Outcome::UsageOrIo;
+        }
+    };
+    let Some(name) = args.scene.to_str() else {
+        eprintln!(
+            "povrayst: {}: the file name is not UTF-8",
+            args.scene.display()
+        );
+        return Outcome::UsageOrIo;
+    };
+    if let Err(error) = std::fs::metadata(&args.scene) {
+        eprintln!("povrayst: cannot read {name}: {error}");
+        return Outcome::UsageOrIo;
+    }
+    let files = DiskFiles::for_scene(&args.scene, &args.library_paths);
+    let rendered = match renderer::pipeline::render_source(name, &files, &options) {
+        Ok(rendered) => rendered,
+        Err(failure) => {
+            eprint!("{}", failure.to_human());
+            return Outcome::SceneErrors;
+        }
+    };
+    eprint!("{}", rendered.warnings_to_human());
+    let output = args
+        .output
+        .clone()
+        .unwrap_or_else(|| args.scene.with_extension("png"));
+    match write_whole(&output, &renderer::encode_png(&rendered.image, &options)) {
+        Ok(()) => Outcome::Success,
+        Err(error) => {
+            eprintln!("povrayst: cannot write {}: {error}", output.display());
+            Outcome::UsageOrIo
+        }
+    }
+}
+
+/// The package defaults, then the flags, then `--extra`, each through POV-Ray's option parser.
+fn render_options(args: &RenderArgs) -> Result<RenderOptions, String> {
+    let mut options = RenderOptions::default();
+    for option in args.flags.povray_options() {
+        options.apply_povray_option(&option)?;
+    }
+    for option in &args.extra {
+        options
+            .apply_povray_option(option)
+            .map_err(|error| format!("--extra: {error}"))?;
+    }
+    Ok(options)
+}
+
+/// Writes `bytes` to a temporary file in the destination's directory and renames it over
+/// the destination, so that readers never see a half-written image.
+fn write_whole(destination: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let file_name = destination
+        .file_name()
+        .unwrap_or_default()
+        .to_string_lossy();
+    let temporary =
+        destination.with_file_name(format!(".{file_name}.{}.povrayst-tmp", std::process::id()));
+    let written = std::fs::File::create_new(&temporary).and_then(|mut file| {
+        file.write_all(bytes)?;
+        file.sync_all()
+    });
+    let renamed = written.and_then(|()| std::fs::rename(&temporary, destination));
+    if renamed.is_err() {
+        // Nothing to do if it was never made.
+        let _ = std::fs::remove_file(&temporary);
+    }
+    renamed
+}

@@ -1,0 +1,213 @@
+//! The `povrayst` command as a process: `render` writes whole PNG files with the options
+//! of the Typst package, `check` prints gcc-style reports, and the exit status says what
+//! happened (0 fine, 1 scene errors, 2 usage or I/O errors).
+
+use expect_test::expect;
+use std::path::Path;
+use std::process::{Command, Output};
+use tests::povrayst_binary;
+
+const SPHERE: &str = "background { color rgbt <0, 0, 0, 1> }
+camera { location <0, 0, -4> look_at 0 angle 40 }
+light_source { <3, 4, -5> rgb 1 }
+sphere { 0, 1 pigment { rgb <1, 0.5, 0.2> } }
+";
+
+fn povrayst(dir: &Path, args: &[&str]) -> Output {
+    Command::new(povrayst_binary())
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap()
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+/// Width, height and colour type of a PNG file.
+fn png_info(path: &Path) -> (u32, u32, png::ColorType) {
+    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
+    let info = decoder.read_info().unwrap().info().clone();
+    (info.width, info.height, info.color_type)
+}
+
+fn scene_dir(files: &[(&str, &str)]) -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    for (name, text) in files {
+        std::fs::write(dir.path().join(name), text).unwrap();
+    }
+    dir
+}
+
+#[test]
+fn render_writes_a_png_of_the_requested_size() {
+    let dir = scene_dir(&[("scene.pov", SPHERE)]);
+    let output = povrayst(
+        dir.path(),
+        &["render", "scene.pov", "--width", "40", "--height", "30"],
+    );
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    assert_eq!(
+        png_info(&dir.path().join("scene.png")),
+        (40, 30, png::ColorType::Rgb)
+    );
+
+    let output = povrayst(
+        dir.path(),
+        &[
+            "render",
+            "scene.pov",
+            "-o",
+            "alpha.png",
+            "--width",
+            "20",
+            "--height",
+            "10",
+            "--output-alpha",
+        ],
+    );
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    assert_eq!(
+        png_info(&dir.path().join("alpha.png")),
+        (20, 10, png::ColorType::Rgba)
+    );
+}
+
+#[test]
+fn extra_options_come_after_the_flags() {
+    let dir = scene_dir(&[("scene.pov", SPHERE)]);
+    let args = [
+        "render",
+        "scene.pov",
+        "--width",
+        "40",
+        "--extra",
+        "+W16",
+        "--extra",
+        "Height=8",
+    ];
+    let output = povrayst(dir.path(), &args);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    assert_eq!(png_info(&dir.path().join("scene.png")).0, 16);
+    assert_eq!(png_info(&dir.path().join("scene.png")).1, 8);
+}
+
+#[test]
+fn a_failed_render_leaves_the_output_alone() {
+    let dir = scene_dir(&[("scene.pov", "sphere { 0, Radius }\n")]);
+    std::fs::write(dir.path().join("scene.png"), b"the previous picture").unwrap();
+    let output = povrayst(
+        dir.path(),
+        &["render", "scene.pov", "--width", "8", "--height", "6"],
+    );
+    assert_eq!(output.status.code(), Some(1));
+    expect![[r#"
+        scene.pov:1:13: error: undeclared identifier 'Radius'
+            1 | sphere { 0, Radius }
+              |             ^~~~~~
+    "#]]
+    .assert_eq(&stderr(&output));
+    assert_eq!(
+        std::fs::read(dir.path().join("scene.png")).unwrap(),
+        b"the previous picture"
+    );
+    let leftovers: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+    assert_eq!(leftovers.len(), 2, "no temporary file is left behind");
+}
+
+#[test]
+fn usage_errors_exit_with_2() {
+    let dir = scene_dir(&[("scene.pov", SPHERE)]);
+    let cases = [
+        &["render", "scene.pov", "--aa-depth", "10"][..],
+        &["render", "scene.pov", "--extra", "Frobnicate=on"],
+        &["render", "missing.pov"],
+        &["check", "missing.pov"],
+        &[
+            "render",
+            "scene.pov",
+            "-o",
+            "no/such/dir/out.png",
+            "--width",
+            "4",
+            "--height",
+            "3",
+        ],
+    ];
+    let reports: Vec<String> = cases
+        .iter()
+        .map(|args| {
+            let output = povrayst(dir.path(), args);
+            assert_eq!(output.status.code(), Some(2), "{args:?}");
+            let text = stderr(&output);
+            let said = text
+                .lines()
+                .find(|line| line.starts_with("error:") || line.starts_with("povrayst:"))
+                .unwrap_or_default()
+                .to_owned();
+            format!("{}: {said}", args.join(" "))
+        })
+        .collect();
+    expect![[r#"
+        render scene.pov --aa-depth 10: error: invalid value '10' for '--aa-depth <aa-depth>': expected an integer from 1 to 9, or none
+        render scene.pov --extra Frobnicate=on: povrayst: --extra: option `Frobnicate=on`: unknown option
+        render missing.pov: povrayst: cannot read missing.pov: No such file or directory (os error 2)
+        check missing.pov: povrayst: cannot read missing.pov: No such file or directory (os error 2)
+        render scene.pov -o no/such/dir/out.png --width 4 --height 3: povrayst: cannot write no/such/dir/out.png: No such file or directory (os error 2)"#]].assert_eq(&reports.join("\n"));
+}
+
+#[test]
+fn check_reports_every_file_and_its_debug_output() {
+    let dir = scene_dir(&[
+        (
+            "good.pov",
+            "#version 3.7;\n#debug \"hello\\n\"\nsphere { 0, 1 }\n",
+        ),
+        (
+            "bad.pov",
+            "#version 3.7;\n#include \"shapes.inc\"\nsphere { 0, Size }\n",
+        ),
+        ("shapes.inc", "#declare Sise = 1;\n"),
+    ]);
+    let output = povrayst(dir.path(), &["check", "good.pov"]);
+    assert_eq!(output.status.code(), Some(0));
+    expect![[r#"
+        hello
+    "#]]
+    .assert_eq(&stderr(&output));
+    let output = povrayst(dir.path(), &["check", "good.pov", "bad.pov"]);
+    assert_eq!(output.status.code(), Some(1));
+    expect![[r#"
+        hello
+        bad.pov:3:13: error: undeclared identifier 'Size'
+            3 | sphere { 0, Size }
+              |             ^~~~
+        note: did you mean 'Sise'?
+    "#]]
+    .assert_eq(&stderr(&output));
+}
+
+#[test]
+fn includes_come_from_the_scene_directory_and_library_paths() {
+    let dir = scene_dir(&[]);
+    let scenes = dir.path().join("scenes");
+    let library = dir.path().join("library");
+    std::fs::create_dir_all(&scenes).unwrap();
+    std::fs::create_dir_all(&library).unwrap();
+    std::fs::write(
+        scenes.join("scene.pov"),
+        "#version 3.7;\n#include \"local.inc\"\n#include \"shared.inc\"\nsphere { 0, A + B }\n",
+    )
+    .unwrap();
+    std::fs::write(scenes.join("local.inc"), "#declare A = 1;\n").unwrap();
+    std::fs::write(library.join("shared.inc"), "#declare B = 1;\n").unwrap();
+    let output = povrayst(dir.path(), &["check", "scenes/scene.pov"]);
+    assert_eq!(
+        output.status.code(),
+        Some(1),
+        "shared.inc is not found without -L"
+    );
+    let output = povrayst(dir.path(), &["check", "-L", "library", "scenes/scene.pov"]);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+}
