@@ -1,4 +1,4 @@
-//! `povrayst`: render and check POV-Ray scenes.
+//! `povrayst`: render, check and inspect POV-Ray scenes.
 //!
 //! Exit status: 0 when all went well, 1 when a scene has errors, 2 for usage and I/O errors.
 
@@ -26,6 +26,8 @@ enum Command {
     Render(commands::render::RenderArgs),
     /// Report a scene's errors and warnings, gcc-style, on stderr.
     Check(commands::check::CheckArgs),
+    /// Print a scene's syntax tree, and its syntax errors on stderr.
+    Syntax(commands::syntax::SyntaxArgs),
 }
 
 /// How a command ended, as the process's exit status.
@@ -53,6 +55,7 @@ fn main() -> ExitCode {
     match cli.command {
         Command::Render(args) => commands::render::run(&args),
         Command::Check(args) => commands::check::run(&args),
+        Command::Syntax(args) => commands::syntax::run(&args),
     }
     .into()
 }

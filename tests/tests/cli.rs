@@ -211,3 +211,24 @@ fn includes_come_from_the_scene_directory_and_library_paths() {
     let output = povrayst(dir.path(), &["check", "-L", "library", "scenes/scene.pov"]);
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
 }
+
+#[test]
+fn syntax_prints_the_tree_and_its_errors() {
+    let dir = scene_dir(&[
+        ("good.pov", "sphere { 0, 1 }\n"),
+        ("bad.pov", "sphere { 0, 1\n"),
+    ]);
+    let output = povrayst(dir.path(), &["syntax", "good.pov"]);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    let tree = String::from_utf8(output.stdout).unwrap();
+    assert!(tree.starts_with("SOURCE_FILE@0..16\n"), "{tree}");
+    assert!(tree.contains("SPHERE_KW@0..6 \"sphere\""), "{tree}");
+    let output = povrayst(dir.path(), &["syntax", "bad.pov"]);
+    assert_eq!(output.status.code(), Some(1));
+    expect![[r#"
+        bad.pov:1:8: error: unclosed '{'
+            1 | sphere { 0, 1
+              |        ^
+    "#]]
+    .assert_eq(&stderr(&output));
+}
