@@ -9,7 +9,7 @@ use crate::material::{self, Material};
 use crate::object::{Csg, CsgKind, Leaf, Object, Visibility};
 use crate::shapes::{Cone, Cuboid, Cylinder, Disc, Plane, Shape, Sphere, Torus, Triangle};
 use crate::tracer::{Quality, World};
-use analysis::scene::{self, CsgOp, Origin, Scene};
+use analysis::scene::{self, CsgOp, Interior, Origin, Scene};
 use glam::{DAffine3, DMat3, DVec3};
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -25,8 +25,10 @@ pub struct BuildError {
 #[derive(Debug, Clone, Copy)]
 pub struct BuildSettings {
     pub quality: u8,
-    /// With alpha output the background is transparent black, as in POV-Ray 3.7.
+    /// With alpha output the background is transparent.
     pub output_alpha: bool,
+    /// `Max_Trace_Level` from the options, which overrides the scene's.
+    pub max_trace_level: Option<u32>,
 }
 
 pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, BuildError> {
@@ -40,23 +42,41 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
     }
     let mut objects = Vec::with_capacity(scene.objects.len());
     for object in &scene.objects {
-        if let Some(built) = builder.object(object, None, Visibility::default())? {
+        if let Some(built) = builder.object(object, None, None, Visibility::default())? {
             objects.push(built);
         }
     }
     let bvh = Bvh::build(objects);
-    let background = match (settings.output_alpha, &scene.background) {
-        (true, _) => Sample::new(DVec3::ZERO, 1.0),
-        (false, Some(c)) => Sample::new(c.rgb, 0.0),
-        (false, None) => Sample::new(DVec3::ZERO, 0.0),
+    // Scenes without `#version 3.7` keep POV-Ray 3.6's rules: with alpha output the
+    // background is fully transparent black whatever its colour.
+    let legacy = scene.version.is_none_or(|v| v < 3.7);
+    let background_colour = scene.background.unwrap_or_default();
+    let background = match (settings.output_alpha, legacy) {
+        (false, _) => Sample::new(background_colour.rgb, 0.0),
+        (true, true) => Sample::new(DVec3::ZERO, 1.0),
+        (true, false) => {
+            let c = background_colour;
+            let opacity = 1.0 - c.filter - c.transmit;
+            let through = c.rgb * c.filter + DVec3::splat(c.transmit);
+            let grey = 0.297 * through.x + 0.589 * through.y + 0.114 * through.z;
+            Sample::new(c.rgb * opacity, grey.abs().min(1.0))
+        }
     };
     let scale = scene_scale(scene, &bvh);
     Ok(World {
         bvh,
         lights: builder.lights,
         background,
+        reflected_background: background_colour.rgb,
         ambient_light: scene.settings.ambient_light.rgb,
         quality: Quality::from_level(settings.quality),
+        max_trace_level: settings
+            .max_trace_level
+            .or(scene.settings.max_trace_level)
+            .unwrap_or(5)
+            .clamp(1, 256),
+        adc_bailout: scene.settings.adc_bailout,
+        legacy_opacity: legacy,
         scale,
     })
 }
@@ -114,11 +134,6 @@ impl Builder {
         }
         let m = Material::from_scene(texture).map_err(fail)?;
         material::check_finish(&m.finish).map_err(fail)?;
-        if m.pigment.may_transmit() {
-            return Err(fail(
-                "not supported yet: transparent pigments (filter/transmit)".into(),
-            ));
-        }
         let m = Arc::new(m);
         self.materials.insert(key, m.clone());
         Ok(m)
@@ -130,6 +145,7 @@ impl Builder {
         &mut self,
         object: &scene::Object,
         inherited: Option<&Arc<scene::Texture>>,
+        inherited_interior: Option<&Arc<Interior>>,
         inherited_visibility: Visibility,
     ) -> Result<Option<Object>, BuildError> {
         let fail = |message: String| BuildError {
@@ -142,9 +158,17 @@ impl Builder {
         let flags = object.flags;
         let visibility = Visibility {
             no_image: flags.no_image || inherited_visibility.no_image,
+            no_reflection: flags.no_reflection || inherited_visibility.no_reflection,
             no_shadow: flags.no_shadow || inherited_visibility.no_shadow,
         };
         let texture = object.texture.as_ref().or(inherited);
+        // Every object has an interior, its own or its CSG's; the leaves of one object
+        // share it, so that a ray knows when it leaves what it entered.
+        let interior = object
+            .interior
+            .clone()
+            .or_else(|| inherited_interior.cloned())
+            .unwrap_or_default();
         let (shape, frame) = match &object.shape {
             scene::Shape::Csg {
                 op,
@@ -156,7 +180,7 @@ impl Builder {
                 }
                 let mut built = Vec::with_capacity(children.len());
                 for child in children {
-                    if let Some(c) = self.object(child, texture, visibility)? {
+                    if let Some(c) = self.object(child, texture, Some(&interior), visibility)? {
                         built.push(c);
                     } else if *op == CsgOp::Intersection {
                         // An empty child leaves an empty intersection.
@@ -294,6 +318,7 @@ impl Builder {
             to_world,
             flags.inverse,
             material,
+            interior,
             visibility,
         ))))
     }

@@ -1,5 +1,8 @@
-//! Light sources at run time: where light comes from for a surface point, how strong it is
-//! there, and whether its shadows are traced.
+//! Light sources at run time: where light comes from for a surface point and how strong it
+//! is there before shadows, following POV-Ray's attenuation rules: the spotlight's cone
+//! (`radius`, `falloff` and `tightness` on the cosine of the angle), the cylinder light's
+//! tube, parallel lights' fixed direction, and `fade_distance`/`fade_power`. Area lights
+//! carry their grid for the shadow sampler.
 
 use analysis::scene::{self, LightKind};
 use glam::DVec3;
@@ -8,8 +11,75 @@ use glam::DVec3;
 pub struct Light {
     pub position: DVec3,
     pub colour: DVec3,
+    /// Fill lights: no shadows, no highlights.
     pub shadowless: bool,
+    kind: Kind,
+    /// `(fade_distance, fade_power)` when fading is on.
     fade: Option<(f64, f64)>,
+    pub area: Option<AreaGrid>,
+}
+
+#[derive(Debug, Clone, Copy)]
+enum Kind {
+    Point,
+    /// `direction` from the light towards `point_at`; angles as cosines.
+    Spot {
+        direction: DVec3,
+        cos_radius: f64,
+        cos_falloff: f64,
+        tightness: f64,
+    },
+    Cylinder {
+        direction: DVec3,
+        radius: f64,
+        falloff: f64,
+        tightness: f64,
+    },
+    /// Light arriving along `-direction` everywhere.
+    Parallel {
+        direction: DVec3,
+    },
+}
+
+/// An area light's grid of point lights spread over `axis1` × `axis2`.
+#[derive(Debug, Clone, Copy)]
+pub struct AreaGrid {
+    pub axis1: DVec3,
+    pub axis2: DVec3,
+    pub size1: u32,
+    pub size2: u32,
+    pub adaptive: u32,
+    pub jitter: bool,
+    pub circular: bool,
+    pub orient: bool,
+}
+
+impl AreaGrid {
+    /// The offset of grid point `(u, v)` from the light's centre; `(ju, jv)` is a jitter in
+    /// grid units.
+    pub fn offset(&self, axis1: DVec3, axis2: DVec3, u: f64, v: f64) -> DVec3 {
+        let (s1, s2) = (f64::from(self.size1), f64::from(self.size2));
+        if self.circular && self.size1 > 1 && self.size2 > 1 {
+            // Squares of the grid mapped onto concentric circles.
+            let mut a = u / (s1 - 1.0) - 0.5 + 0.001;
+            let mut b = v / (s2 - 1.0) - 0.5 + 0.001;
+            let scale = a.abs().max(b.abs()) / (a * a + b * b).sqrt();
+            a *= scale;
+            b *= scale;
+            return axis1 * a + axis2 * b;
+        }
+        let a = if self.size1 > 1 {
+            axis1 * (u / (s1 - 1.0) - 0.5)
+        } else {
+            DVec3::ZERO
+        };
+        let b = if self.size2 > 1 {
+            axis2 * (v / (s2 - 1.0) - 0.5)
+        } else {
+            DVec3::ZERO
+        };
+        a + b
+    }
 }
 
 /// Light arriving at a point from one source, before shadows.
@@ -17,54 +87,214 @@ pub struct Light {
 pub struct Incoming {
     /// Unit vector from the point towards the light.
     pub direction: DVec3,
+    /// How far along `direction` the shadow test must look.
     pub distance: f64,
     pub colour: DVec3,
 }
 
 impl Light {
     pub fn from_scene(light: &scene::Light) -> Result<Light, String> {
-        match light.kind {
-            LightKind::Point => {}
-            LightKind::Spotlight { .. } => return Err("not supported yet: spotlight".into()),
-            LightKind::Cylinder { .. } => return Err("not supported yet: cylinder light".into()),
-            LightKind::Parallel { .. } => return Err("not supported yet: parallel light".into()),
-        }
-        if light.area.is_some() {
-            return Err("not supported yet: area_light".into());
-        }
         if light.looks_like.is_some() {
             return Err("not supported yet: looks_like".into());
         }
         if light.projected_through.is_some() {
             return Err("not supported yet: projected_through".into());
         }
+        let towards = |point_at: DVec3| (point_at - light.position).normalize_or_zero();
+        let kind = match light.kind {
+            LightKind::Point => Kind::Point,
+            LightKind::Spotlight {
+                point_at,
+                radius,
+                falloff,
+                tightness,
+            } => Kind::Spot {
+                direction: towards(point_at),
+                cos_radius: radius.to_radians().cos(),
+                cos_falloff: falloff.to_radians().cos(),
+                tightness,
+            },
+            LightKind::Cylinder {
+                point_at,
+                radius,
+                falloff,
+                tightness,
+            } => Kind::Cylinder {
+                direction: towards(point_at),
+                radius,
+                falloff,
+                tightness,
+            },
+            LightKind::Parallel { point_at } => Kind::Parallel {
+                direction: towards(point_at),
+            },
+        };
         Ok(Light {
             position: light.position,
             colour: light.colour.rgb,
             shadowless: light.shadowless,
-            fade: light
-                .fade_distance
-                .filter(|d| *d > 0.0 && light.fade_power > 0.0)
-                .map(|d| (d, light.fade_power)),
+            kind,
+            fade: (light.fade_power > 0.0)
+                .then(|| (light.fade_distance.unwrap_or(0.0), light.fade_power)),
+            area: light.area.as_ref().map(|a| AreaGrid {
+                axis1: a.axis1,
+                axis2: a.axis2,
+                size1: a.size1.max(1),
+                size2: a.size2.max(1),
+                adaptive: a.adaptive,
+                jitter: a.jitter,
+                circular: a.circular,
+                orient: a.orient,
+            }),
         })
     }
 
-    /// The light reaching `point`, or `None` when none can (the point is at the light).
+    /// The direction and shadow-ray length from `point` to the light placed at `centre`.
+    pub fn ray_to(&self, point: DVec3, centre: DVec3) -> Option<(DVec3, f64)> {
+        match self.kind {
+            Kind::Cylinder { direction, .. } => {
+                // Light travels parallel to the axis: the shadow ray runs back along it.
+                let back = -direction;
+                let depth = (centre - point).dot(back);
+                (back != DVec3::ZERO).then_some((back, depth))
+            }
+            Kind::Parallel { direction } => {
+                let to = centre - point;
+                let depth = to.dot(-direction);
+                (direction != DVec3::ZERO).then_some((-direction, depth))
+            }
+            _ => {
+                let to = centre - point;
+                let distance = to.length();
+                (distance > 0.0 && distance.is_finite()).then(|| (to / distance, distance))
+            }
+        }
+    }
+
+    /// The light reaching `point` from the light's centre, before shadows; `None` when none
+    /// can (outside a spotlight's cone, at the light itself).
     pub fn incoming(&self, point: DVec3) -> Option<Incoming> {
-        let to_light = self.position - point;
-        let distance = to_light.length();
-        if !(distance > 0.0 && distance.is_finite()) {
-            return None;
-        }
-        let mut colour = self.colour;
-        if let Some((fade_distance, fade_power)) = self.fade {
-            // POV-Ray's attenuation: 2 / (1 + (d / fade_distance)^fade_power).
-            colour *= 2.0 / (1.0 + (distance / fade_distance).powf(fade_power));
-        }
-        Some(Incoming {
-            direction: to_light / distance,
+        let (direction, distance) = self.ray_to(point, self.position)?;
+        let attenuation = self.attenuation(point, direction, distance);
+        (attenuation > 0.0).then(|| Incoming {
+            direction,
             distance,
-            colour,
+            colour: self.colour * attenuation,
         })
+    }
+
+    /// Cone, tube and distance attenuation for light reaching `point` along `-direction`
+    /// over `distance`.
+    pub fn attenuation(&self, point: DVec3, direction: DVec3, distance: f64) -> f64 {
+        let mut a = 1.0;
+        match self.kind {
+            Kind::Spot {
+                direction: axis,
+                cos_radius,
+                cos_falloff,
+                tightness,
+            } => {
+                let cos = -direction.dot(axis);
+                if cos <= 0.0 {
+                    return 0.0;
+                }
+                a = if tightness == 0.0 {
+                    1.0
+                } else {
+                    cos.powf(tightness)
+                };
+                if cos_radius > 0.0 && cos < cos_radius {
+                    a *= cubic_spline(cos_falloff, cos_radius, cos);
+                }
+            }
+            Kind::Cylinder {
+                direction: axis,
+                radius,
+                falloff,
+                tightness,
+            } => {
+                let v = point - self.position;
+                let k = v.dot(axis);
+                if k <= 0.0 {
+                    return 0.0;
+                }
+                let len = (v - k * axis).length();
+                if len >= falloff {
+                    return 0.0;
+                }
+                let dist = 1.0 - len / falloff;
+                a = if tightness == 0.0 {
+                    1.0
+                } else {
+                    dist.powf(tightness)
+                };
+                if radius > 0.0 && len > radius {
+                    a *= cubic_spline(0.0, 1.0 - radius / falloff, dist);
+                }
+            }
+            Kind::Point | Kind::Parallel { .. } => {}
+        }
+        if let Some((fade_distance, fade_power)) = self.fade {
+            a *= if fade_distance.abs() >= 1e-10 {
+                2.0 / (1.0 + (distance / fade_distance).powf(fade_power))
+            } else {
+                distance.powf(-fade_power)
+            };
+        }
+        if a.is_finite() { a } else { 0.0 }
+    }
+}
+
+/// 0 below `low`, 1 from `high` on, and the smooth cubic step between.
+fn cubic_spline(low: f64, high: f64, x: f64) -> f64 {
+    if x < low {
+        return 0.0;
+    }
+    if x >= high {
+        return 1.0;
+    }
+    let t = (x - low) / (high - low);
+    (3.0 - 2.0 * t) * t * t
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use analysis::scene::Colour;
+
+    fn spot() -> Light {
+        let mut l = scene::Light::point(DVec3::new(0.0, 10.0, 0.0), Colour::gray(1.0));
+        l.kind = LightKind::Spotlight {
+            point_at: DVec3::ZERO,
+            radius: 10.0,
+            falloff: 20.0,
+            tightness: 0.0,
+        };
+        Light::from_scene(&l).unwrap()
+    }
+
+    #[test]
+    fn spotlight_cone() {
+        let s = spot();
+        // On the axis: full; inside the radius: full; beyond the falloff: dark.
+        assert_eq!(s.incoming(DVec3::ZERO).unwrap().colour, DVec3::ONE);
+        let inside = DVec3::new(10.0 * 5f64.to_radians().tan(), 0.0, 0.0);
+        assert_eq!(s.incoming(inside).unwrap().colour, DVec3::ONE);
+        let between = DVec3::new(10.0 * 15f64.to_radians().tan(), 0.0, 0.0);
+        let c = s.incoming(between).unwrap().colour.x;
+        assert!(c > 0.0 && c < 1.0, "{c}");
+        assert!(s.incoming(DVec3::new(10.0, 0.0, 0.0)).is_none());
+    }
+
+    #[test]
+    fn fading_halves_at_the_fade_distance() {
+        let mut l = scene::Light::point(DVec3::ZERO, Colour::gray(1.0));
+        l.fade_distance = Some(2.0);
+        l.fade_power = 2.0;
+        let light = Light::from_scene(&l).unwrap();
+        let c = light.incoming(DVec3::new(2.0, 0.0, 0.0)).unwrap().colour.x;
+        assert!((c - 1.0).abs() < 1e-12);
+        let c = light.incoming(DVec3::new(4.0, 0.0, 0.0)).unwrap().colour.x;
+        assert!((c - 0.4).abs() < 1e-12);
     }
 }

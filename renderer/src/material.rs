@@ -12,6 +12,9 @@ use std::sync::Arc;
 pub struct Material {
     pub pigment: Pigment,
     pub finish: Arc<Finish>,
+    /// Whether any point of the pigment lets light through, so that shadow rays must look
+    /// at the colour.
+    pub transmits: bool,
 }
 
 /// The colour of a surface point.
@@ -70,8 +73,10 @@ impl Material {
                 if normal.is_some() {
                     return Err("not supported yet: normal patterns".into());
                 }
+                let pigment = pigment_from_scene(pigment)?;
                 Ok(Material {
-                    pigment: pigment_from_scene(pigment)?,
+                    transmits: pigment.may_transmit(),
+                    pigment,
                     finish: finish.clone(),
                 })
             }
@@ -105,8 +110,11 @@ fn pigment_from_scene(pigment: &scene::Pigment) -> Result<Pigment, String> {
 
 /// Checks the finish for features the shader does not draw yet.
 pub fn check_finish(finish: &Finish) -> Result<(), String> {
-    if finish.reflection.is_some() {
-        return Err("not supported yet: reflection".into());
+    if finish.crand > 0.0 {
+        return Err("not supported yet: crand".into());
+    }
+    if finish.diffuse_back != 0.0 {
+        return Err("not supported yet: backside diffuse".into());
     }
     if finish.irid.is_some() {
         return Err("not supported yet: irid".into());

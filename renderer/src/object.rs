@@ -9,6 +9,7 @@ use crate::bounds::Aabb;
 use crate::material::Material;
 use crate::ray::{Ray, RayKind};
 use crate::shapes::{Roots, Shape};
+use analysis::scene::Interior;
 use glam::{DAffine3, DMat3, DVec3};
 use std::sync::Arc;
 
@@ -16,6 +17,7 @@ use std::sync::Arc;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Visibility {
     pub no_image: bool,
+    pub no_reflection: bool,
     pub no_shadow: bool,
 }
 
@@ -23,7 +25,9 @@ impl Visibility {
     pub fn sees(&self, kind: RayKind) -> bool {
         match kind {
             RayKind::Primary => !self.no_image,
+            RayKind::Reflected => !self.no_reflection,
             RayKind::Shadow => !self.no_shadow,
+            RayKind::Transmitted => true,
         }
     }
 }
@@ -39,6 +43,8 @@ pub struct Leaf {
     pub normal_matrix: DMat3,
     pub inverse: bool,
     pub material: Arc<Material>,
+    /// What fills the shape; shared by the leaves of one object.
+    pub interior: Arc<Interior>,
     pub visibility: Visibility,
     pub bounds: Aabb,
 }
@@ -57,6 +63,7 @@ impl Leaf {
         to_world: DAffine3,
         inverse: bool,
         material: Arc<Material>,
+        interior: Arc<Interior>,
         visibility: Visibility,
     ) -> Leaf {
         let identity = to_world == DAffine3::IDENTITY;
@@ -69,6 +76,7 @@ impl Leaf {
             normal_matrix: to_local.matrix3.transpose(),
             inverse,
             material,
+            interior,
             visibility,
             bounds,
         }

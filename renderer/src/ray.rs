@@ -1,5 +1,5 @@
 //! Rays, and what a ray is traced for, since objects may hide from some kinds
-//! (`no_image`, `no_shadow`).
+//! (`no_image`, `no_reflection`, `no_shadow`).
 
 use glam::DVec3;
 
@@ -25,6 +25,9 @@ impl Ray {
 pub enum RayKind {
     /// From the camera.
     Primary,
+    Reflected,
+    /// Refracted or transmitted through a surface.
+    Transmitted,
     /// Towards a light, to find what blocks it.
     Shadow,
 }

@@ -20,6 +20,7 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Image, BuildErro
         BuildSettings {
             quality: options.quality,
             output_alpha: options.output_alpha,
+            max_trace_level: options.max_trace_level,
         },
     )?;
     let camera = Camera::from_scene(&scene.camera).map_err(|message| BuildError {

@@ -1,12 +1,15 @@
-//! The tracer: follows one ray into the world and shades what it meets with POV-Ray's
-//! classic lighting model (ambient, emission, diffuse with brilliance, Blinn `specular`,
-//! Phong `phong`), shadows included.
+//! The tracer: follows a ray into the world and shades what it meets with POV-Ray's classic
+//! model: ambient and emission, diffuse with brilliance, Blinn `specular` and Phong `phong`
+//! highlights, shadows (filtered by transparent objects, softened by area lights),
+//! reflection with its variable and Fresnel forms, and filtered or transmitted light going
+//! on through the surface, refracted by the interiors the ray enters and leaves.
 
 use crate::bvh::Bvh;
 use crate::colour::Sample;
-use crate::light::Light;
-use crate::object::{Hit, Query};
+use crate::light::{Incoming, Light};
+use crate::object::{Hit, Leaf, Query};
 use crate::ray::{Ray, RayKind};
+use analysis::scene::{Finish, Interior};
 use glam::DVec3;
 
 /// Which computations the `Quality` setting allows (POV-Ray's levels 0 to 11).
@@ -15,6 +18,9 @@ pub struct Quality {
     /// Levels 0 and 1 show the pigment under full ambient light, nothing else.
     pub lighting: bool,
     pub shadows: bool,
+    pub area_lights: bool,
+    /// Reflected, refracted and transmitted rays.
+    pub secondary_rays: bool,
 }
 
 impl Quality {
@@ -22,6 +28,8 @@ impl Quality {
         Quality {
             lighting: level >= 2,
             shadows: level >= 4,
+            area_lights: level >= 5,
+            secondary_rays: level >= 8,
         }
     }
 }
@@ -31,19 +39,32 @@ impl Quality {
 pub struct World {
     pub bvh: Bvh,
     pub lights: Vec<Light>,
-    /// What a ray that meets nothing returns.
+    /// What a ray that meets nothing returns, for primary and transmitted rays.
     pub background: Sample,
+    /// The background seen in reflections, which never show alpha.
+    pub reflected_background: DVec3,
     pub ambient_light: DVec3,
     pub quality: Quality,
+    pub max_trace_level: u32,
+    pub adc_bailout: f64,
+    /// Scenes before `#version 3.7` weigh a transparent layer's own colour differently.
+    pub legacy_opacity: bool,
     /// The size of the scene, from which the self-intersection tolerance follows so that
     /// scenes at any scale trace alike.
     pub scale: f64,
+}
+
+/// POV-Ray's greyscale weights.
+fn greyscale(c: DVec3) -> f64 {
+    0.297 * c.x + 0.589 * c.y + 0.114 * c.z
 }
 
 /// A tracer for one thread: the world and scratch space reused from ray to ray.
 pub struct Tracer<'w> {
     world: &'w World,
     scratch: Vec<Hit<'w>>,
+    /// The interiors the current ray is inside, innermost last (compared by identity).
+    interiors: Vec<&'w Interior>,
 }
 
 impl<'w> Tracer<'w> {
@@ -51,6 +72,7 @@ impl<'w> Tracer<'w> {
         Tracer {
             world,
             scratch: Vec::new(),
+            interiors: Vec::new(),
         }
     }
 
@@ -61,19 +83,24 @@ impl<'w> Tracer<'w> {
 
     /// The sample a camera ray brings back.
     pub fn trace_primary(&mut self, ray: &Ray) -> Sample {
-        let q = Query::new(
-            *ray,
-            RayKind::Primary,
-            self.tolerance(ray.origin),
-            f64::INFINITY,
-        );
+        self.interiors.clear();
+        self.trace(ray, RayKind::Primary, 1, 1.0)
+    }
+
+    fn trace(&mut self, ray: &Ray, kind: RayKind, level: u32, weight: f64) -> Sample {
+        if level > self.world.max_trace_level {
+            return Sample::default();
+        }
+        let q = Query::new(*ray, kind, self.tolerance(ray.origin), f64::INFINITY);
         match self.world.bvh.nearest(&q, &mut self.scratch) {
+            None if kind == RayKind::Reflected => Sample::new(self.world.reflected_background, 0.0),
             None => self.world.background,
-            Some(hit) => Sample::new(self.shade(ray, &hit), 0.0),
+            Some(hit) => self.shade(ray, &hit, level, weight),
         }
     }
 
-    fn shade(&mut self, ray: &Ray, hit: &Hit<'w>) -> DVec3 {
+    fn shade(&mut self, ray: &Ray, hit: &Hit<'w>, level: u32, weight: f64) -> Sample {
+        let world = self.world;
         let p = ray.at(hit.t);
         let leaf = hit.leaf;
         let mut normal = leaf.normal(p, hit.part);
@@ -84,78 +111,479 @@ impl<'w> Tracer<'w> {
         let material = &leaf.material;
         let pigment = material.pigment.colour_at(p);
         let finish = &*material.finish;
-        if !self.world.quality.lighting {
-            return pigment.rgb;
+        if !world.quality.lighting {
+            return Sample::new(pigment.rgb, 0.0);
         }
-        let opacity = (1.0 - pigment.filter - pigment.transmit).clamp(0.0, 1.0);
+        let opacity = if world.legacy_opacity {
+            1.0 - (pigment.filter * pigment.rgb.max_element() + pigment.transmit)
+        } else {
+            1.0 - pigment.filter - pigment.transmit
+        };
+        let cos_incidence = -ray.direction.dot(normal);
+        let relative_ior = self.relative_ior(&leaf.interior);
+        let reflectivity = reflectivity(finish, pigment.rgb, cos_incidence, relative_ior);
+
         let mut colour =
-            pigment.rgb * (finish.ambient * self.world.ambient_light + finish.emission) * opacity;
-        let world = self.world;
+            pigment.rgb * (finish.ambient * world.ambient_light + finish.emission) * opacity;
         for light in &world.lights {
-            let Some(incoming) = light.incoming(p) else {
-                continue;
-            };
-            let cos_in = normal.dot(incoming.direction);
-            if cos_in <= 0.0 {
-                continue;
+            colour += self.direct_light(light, p, normal, ray, pigment.rgb, finish, opacity);
+        }
+
+        // Light filtered or transmitted through the surface.
+        let mut filter = pigment.rgb * pigment.filter + DVec3::splat(pigment.transmit);
+        if finish.conserve_energy {
+            filter *= (DVec3::ONE - reflectivity).min(DVec3::ONE);
+        }
+        let trans = greyscale(filter).abs().min(1.0);
+        let mut transmit = 0.0;
+        let mut total_reflection = false;
+        if trans > world.adc_bailout && world.quality.secondary_rays {
+            let new_weight = weight * filter.abs().max_element();
+            let (through, tir) = self.transmitted(ray, p, normal, leaf, level, new_weight);
+            total_reflection = tir;
+            let fade = self.fade(&leaf.interior, hit.t);
+            if tir {
+                colour += fade * through.colour;
+            } else {
+                colour += fade * through.colour * filter;
+                transmit = greyscale(fade) * through.transmit * trans;
             }
-            if !light.shadowless && world.quality.shadows && self.blocked(p, &incoming) {
-                continue;
-            }
-            if finish.diffuse > 0.0 {
-                let intensity = if finish.brilliance == 1.0 {
-                    cos_in
+        }
+
+        if world.quality.secondary_rays && !total_reflection && reflectivity != DVec3::ZERO {
+            let new_weight = weight * reflectivity.max_element();
+            if new_weight > world.adc_bailout {
+                let reflected = self.reflect(ray, p, normal, level, new_weight);
+                let exponent = finish.reflection.as_ref().map_or(1.0, |r| r.exponent);
+                let reflected = if exponent != 1.0 && exponent > 0.0 {
+                    reflected.max(DVec3::ZERO).powf(1.0 / exponent)
                 } else {
-                    cos_in.powf(finish.brilliance)
+                    reflected
                 };
-                colour += incoming.colour * pigment.rgb * (finish.diffuse * intensity * opacity);
+                colour += reflectivity * reflected;
             }
-            // POV-Ray's shadowless (fill) lights cause no highlights.
-            if light.shadowless {
-                continue;
+        }
+        Sample::new(colour, transmit)
+    }
+
+    /// Diffuse light and highlights from one light source.
+    #[allow(clippy::too_many_arguments)]
+    fn direct_light(
+        &mut self,
+        light: &Light,
+        p: DVec3,
+        normal: DVec3,
+        ray: &Ray,
+        surface: DVec3,
+        finish: &Finish,
+        opacity: f64,
+    ) -> DVec3 {
+        let Some(incoming) = light.incoming(p) else {
+            return DVec3::ZERO;
+        };
+        let cos_in = normal.dot(incoming.direction);
+        if cos_in < 1e-10 {
+            return DVec3::ZERO;
+        }
+        let world = self.world;
+        let light_colour = if !light.shadowless && world.quality.shadows {
+            self.unshadowed(light, p, &incoming)
+        } else {
+            incoming.colour
+        };
+        if light_colour.max_element() < 1e-10 {
+            return DVec3::ZERO;
+        }
+        let mut colour = DVec3::ZERO;
+        if finish.diffuse > 0.0 {
+            let intensity = if finish.brilliance == 1.0 {
+                cos_in
+            } else {
+                cos_in.powf(finish.brilliance)
+            };
+            colour += light_colour * surface * (finish.diffuse * intensity * opacity);
+        }
+        // POV-Ray's shadowless (fill) lights cause no highlights.
+        if light.shadowless {
+            return colour;
+        }
+        if finish.phong > 0.0 {
+            let reflected = ray.direction - 2.0 * ray.direction.dot(normal) * normal;
+            let cos = reflected.dot(incoming.direction);
+            if cos > 0.0 && (finish.phong_size < 60.0 || cos > 0.0008) {
+                let intensity = finish.phong * cos.powf(finish.phong_size);
+                let tint = metallic_tint(finish.metallic, surface, normal.dot(incoming.direction));
+                colour += light_colour * tint * intensity;
             }
-            if finish.specular > 0.0 {
-                let halfway = incoming.direction - ray.direction;
-                let len = halfway.length();
-                if len > 0.0 {
-                    let cos = normal.dot(halfway) / len;
-                    if cos > 0.0 {
-                        let intensity = finish.specular * cos.powf(1.0 / finish.roughness);
-                        colour +=
-                            highlight(incoming.colour, pigment.rgb, finish.metallic) * intensity;
-                    }
-                }
-            }
-            if finish.phong > 0.0 {
-                let reflected = ray.direction - 2.0 * ray.direction.dot(normal) * normal;
-                let cos = reflected.dot(incoming.direction);
+        }
+        if finish.specular > 0.0 {
+            let halfway = (incoming.direction - ray.direction) * 0.5;
+            let len = halfway.length();
+            if len > 0.0 {
+                let cos = normal.dot(halfway) / len;
                 if cos > 0.0 {
-                    let intensity = finish.phong * cos.powf(finish.phong_size);
-                    colour += highlight(incoming.colour, pigment.rgb, finish.metallic) * intensity;
+                    let intensity = finish.specular * cos.powf(1.0 / finish.roughness);
+                    let ndotl = halfway.dot(incoming.direction) / len;
+                    let tint = metallic_tint(finish.metallic, surface, ndotl);
+                    colour += light_colour * tint * intensity;
                 }
             }
         }
         colour
     }
 
-    /// Whether an object casting shadows stands between `p` and the light.
-    fn blocked(&mut self, p: DVec3, incoming: &crate::light::Incoming) -> bool {
-        let eps = self.tolerance(p);
-        let q = Query::new(
-            Ray::new(p, incoming.direction),
-            RayKind::Shadow,
-            eps,
-            incoming.distance - eps,
-        );
-        self.world.bvh.nearest(&q, &mut self.scratch).is_some()
+    /// The light that reaches `p` past every shadow-casting object: none behind an opaque
+    /// one, filtered by the colours of transparent ones, averaged over an area light.
+    fn unshadowed(&mut self, light: &Light, p: DVec3, incoming: &Incoming) -> DVec3 {
+        match (&light.area, self.world.quality.area_lights) {
+            (Some(grid), true) => {
+                let (axis1, axis2) = if grid.orient {
+                    oriented_axes(grid.axis1, incoming.direction)
+                } else {
+                    (grid.axis1, grid.axis2)
+                };
+                let mut samples = vec![None; (grid.size1 * grid.size2) as usize];
+                let area = AreaSampler {
+                    light,
+                    point: p,
+                    axis1,
+                    axis2,
+                    colour: incoming.colour,
+                };
+                let (s1, s2) = (grid.size1 as i32 - 1, grid.size2 as i32 - 1);
+                area.region(self, &mut samples, (0, 0, s1, s2), 0)
+            }
+            _ => self.filtered(p, incoming.direction, incoming.distance, incoming.colour),
+        }
+    }
+
+    /// `colour` after the shadow ray from `p` along `direction` over `distance`.
+    fn filtered(&mut self, p: DVec3, direction: DVec3, distance: f64, colour: DVec3) -> DVec3 {
+        let mut colour = colour;
+        let mut origin = p;
+        let mut remaining = distance;
+        // The interiors the shadow ray is inside, for distance fading; it starts outside
+        // everything, as POV-Ray's shadow rays do.
+        let mut inside: Vec<&'w Interior> = Vec::new();
+        // Each transparent occluder filters the light and the search goes on beyond it;
+        // the bound stops a pathological stack of surfaces.
+        for _ in 0..64 {
+            let eps = self.tolerance(origin);
+            let q = Query::new(
+                Ray::new(origin, direction),
+                RayKind::Shadow,
+                eps,
+                remaining - eps,
+            );
+            let Some(hit) = self.world.bvh.nearest(&q, &mut self.scratch) else {
+                return colour;
+            };
+            let leaf: &'w Leaf = hit.leaf;
+            if !leaf.material.transmits {
+                return DVec3::ZERO;
+            }
+            let point = q.ray.at(hit.t);
+            let c = leaf.material.pigment.colour_at(point);
+            colour *= c.rgb * c.filter + DVec3::splat(c.transmit);
+            let interior: &'w Interior = &leaf.interior;
+            match inside.iter().position(|i| std::ptr::eq(*i, interior)) {
+                Some(at) => {
+                    colour *= fade(interior, hit.t);
+                    inside.remove(at);
+                }
+                None => inside.push(interior),
+            }
+            if colour.max_element() < self.world.adc_bailout {
+                return DVec3::ZERO;
+            }
+            origin = point;
+            remaining -= hit.t;
+        }
+        DVec3::ZERO
+    }
+
+    /// The relative index of refraction at a surface of `interior`, as the ray sees it.
+    fn relative_ior(&self, interior: &Interior) -> f64 {
+        match self.interiors.as_slice() {
+            [] => interior.ior,
+            [.., outer, last] if std::ptr::eq(*last, interior) => outer.ior / interior.ior,
+            [last] if std::ptr::eq(*last, interior) => 1.0 / interior.ior,
+            [.., last] => interior.ior / last.ior,
+        }
+    }
+
+    /// Distance attenuation inside the interior the ray is leaving.
+    fn fade(&self, interior: &Interior, depth: f64) -> DVec3 {
+        let inside = self
+            .interiors
+            .last()
+            .is_some_and(|i| std::ptr::eq(*i, interior));
+        if inside {
+            fade(interior, depth)
+        } else {
+            DVec3::ONE
+        }
+    }
+
+    /// The light arriving through the surface: transmitted straight on, or refracted;
+    /// `true` with the reflected light when the refraction is total internal reflection.
+    #[allow(clippy::too_many_arguments)]
+    fn transmitted(
+        &mut self,
+        ray: &Ray,
+        p: DVec3,
+        normal: DVec3,
+        leaf: &'w Leaf,
+        level: u32,
+        weight: f64,
+    ) -> (Sample, bool) {
+        if weight < self.world.adc_bailout {
+            return (Sample::default(), false);
+        }
+        let interior: &'w Interior = &leaf.interior;
+        let saved = self.interiors.clone();
+        let position = self
+            .interiors
+            .iter()
+            .position(|i| std::ptr::eq(*i, interior));
+        let ior = match (self.interiors.last(), position) {
+            (None, _) => {
+                self.interiors.push(interior);
+                1.0 / interior.ior
+            }
+            (Some(last), _) if std::ptr::eq(*last, interior) => {
+                self.interiors.pop();
+                match self.interiors.last() {
+                    None => interior.ior,
+                    Some(outer) => interior.ior / outer.ior,
+                }
+            }
+            (Some(_), Some(pos)) => {
+                // Leaving an overlap of two interiors: no bend, as POV-Ray has it.
+                self.interiors.remove(pos);
+                1.0
+            }
+            (Some(outer), None) => {
+                let ior = outer.ior / interior.ior;
+                self.interiors.push(interior);
+                ior
+            }
+        };
+        let result = if (ior - 1.0).abs() < 1e-10 {
+            let next = Ray::new(p, ray.direction);
+            (
+                self.trace(&next, RayKind::Transmitted, level + 1, weight),
+                false,
+            )
+        } else {
+            let mut n = ray.direction.dot(normal);
+            let local = if n <= 0.0 {
+                n = -n;
+                normal
+            } else {
+                -normal
+            };
+            let t = 1.0 + ior * ior * (n * n - 1.0);
+            if t < 0.0 {
+                self.interiors = saved.clone();
+                let reflected = self.reflect(ray, p, normal, level, weight);
+                (Sample::new(reflected, 0.0), true)
+            } else {
+                let direction =
+                    (ior * ray.direction + (ior * n - t.sqrt()) * local).normalize_or_zero();
+                let next = Ray::new(p, direction);
+                (
+                    self.trace(&next, RayKind::Transmitted, level + 1, weight),
+                    false,
+                )
+            }
+        };
+        self.interiors = saved;
+        result
+    }
+
+    /// The colour seen in the mirror direction.
+    fn reflect(&mut self, ray: &Ray, p: DVec3, normal: DVec3, level: u32, weight: f64) -> DVec3 {
+        let direction =
+            (ray.direction - 2.0 * ray.direction.dot(normal) * normal).normalize_or_zero();
+        let next = Ray::new(p, direction);
+        self.trace(&next, RayKind::Reflected, level + 1, weight)
+            .colour
     }
 }
 
-/// The colour of a highlight: the light's, tinted towards the surface's by `metallic`.
-fn highlight(light: DVec3, surface: DVec3, metallic: f64) -> DVec3 {
-    if metallic > 0.0 {
-        light * (DVec3::ONE + metallic * (surface - DVec3::ONE))
-    } else {
-        light
+/// How much light is left after `depth` inside an interior with `fade_distance`,
+/// `fade_power` and `fade_color`.
+fn fade(interior: &Interior, depth: f64) -> DVec3 {
+    if interior.fade_distance.abs() <= 1e-10 || interior.fade_power <= 0.0 {
+        return DVec3::ONE;
     }
+    let colour = interior.fade_colour.rgb;
+    if interior.fade_power >= 1000.0 {
+        let d = depth / interior.fade_distance;
+        return DVec3::new(
+            (-(1.0 - colour.x) * d).exp(),
+            (-(1.0 - colour.y) * d).exp(),
+            (-(1.0 - colour.z) * d).exp(),
+        );
+    }
+    let k = 1.0 + (depth / interior.fade_distance).powf(interior.fade_power);
+    colour + (DVec3::ONE - colour) / k
+}
+
+/// Samples an area light's grid adaptively, as POV-Ray does: the corners of a region
+/// first, and the region split while `adaptive` asks for more levels or its corners
+/// disagree.
+struct AreaSampler<'l> {
+    light: &'l Light,
+    point: DVec3,
+    axis1: DVec3,
+    axis2: DVec3,
+    colour: DVec3,
+}
+
+impl AreaSampler<'_> {
+    fn sample(&self, tracer: &mut Tracer<'_>, u: i32, v: i32) -> DVec3 {
+        let grid = self.light.area.as_ref().expect("an area light");
+        let (mut fu, mut fv) = (f64::from(u), f64::from(v));
+        if grid.jitter {
+            // A fixed pseudo-random offset per point and grid cell, so that renders repeat.
+            let h = hash3(self.point, u, v);
+            fu += ((h & 0xffff) as f64 / 65536.0) - 0.5;
+            fv += (((h >> 16) & 0xffff) as f64 / 65536.0) - 0.5;
+        }
+        let centre = self.light.position + grid.offset(self.axis1, self.axis2, fu, fv);
+        let Some((direction, distance)) = self.light.ray_to(self.point, centre) else {
+            return DVec3::ZERO;
+        };
+        tracer.filtered(self.point, direction, distance, self.colour)
+    }
+
+    fn region(
+        &self,
+        tracer: &mut Tracer<'_>,
+        cache: &mut [Option<DVec3>],
+        (u1, v1, u2, v2): (i32, i32, i32, i32),
+        level: u32,
+    ) -> DVec3 {
+        let grid = self.light.area.as_ref().expect("an area light");
+        let size2 = grid.size2 as i32;
+        let mut corners = [DVec3::ZERO; 4];
+        for (i, (u, v)) in [(u1, v1), (u2, v1), (u1, v2), (u2, v2)]
+            .into_iter()
+            .enumerate()
+        {
+            let index = (u * size2 + v) as usize;
+            corners[i] = match cache[index] {
+                Some(c) => c,
+                None => {
+                    let c = self.sample(tracer, u, v);
+                    cache[index] = Some(c);
+                    c
+                }
+            };
+        }
+        let differ = |a: DVec3, b: DVec3| (a - b).abs().element_sum() > 0.1;
+        if (u2 - u1 > 1 || v2 - v1 > 1)
+            && (level < grid.adaptive
+                || differ(corners[0], corners[1])
+                || differ(corners[1], corners[3])
+                || differ(corners[3], corners[2])
+                || differ(corners[2], corners[0]))
+        {
+            let (um, vm) = ((u1 + u2) as f64 / 2.0, (v1 + v2) as f64 / 2.0);
+            let (lo_u, hi_u) = (um.floor() as i32, um.ceil() as i32);
+            let (lo_v, hi_v) = (vm.floor() as i32, vm.ceil() as i32);
+            let mut sum = DVec3::ZERO;
+            for sub in [
+                (u1, v1, lo_u, lo_v),
+                (hi_u, v1, u2, lo_v),
+                (u1, hi_v, lo_u, v2),
+                (hi_u, hi_v, u2, v2),
+            ] {
+                sum += self.region(tracer, cache, sub, level + 1);
+            }
+            return sum * 0.25;
+        }
+        (corners[0] + corners[1] + corners[2] + corners[3]) * 0.25
+    }
+}
+
+fn hash3(p: DVec3, u: i32, v: i32) -> u64 {
+    let mut h = 0xcbf2_9ce4_8422_2325u64;
+    for x in [
+        p.x.to_bits(),
+        p.y.to_bits(),
+        p.z.to_bits(),
+        u as u64,
+        v as u64,
+    ] {
+        h ^= x;
+        h = h.wrapping_mul(0x100_0000_01b3);
+        h ^= h >> 29;
+    }
+    h
+}
+
+/// An area light's axes turned to face the point, keeping the first axis's length.
+fn oriented_axes(axis1: DVec3, to_light: DVec3) -> (DVec3, DVec3) {
+    let length = axis1.length();
+    let helper = if (to_light.z.abs() - 1.0).abs() < 0.01 {
+        DVec3::Y
+    } else {
+        DVec3::Z
+    };
+    let a1 = to_light.cross(helper).normalize_or_zero();
+    let a2 = to_light.cross(a1).normalize_or_zero();
+    (a1 * length, a2 * length)
+}
+
+/// How much the surface reflects, with POV-Ray's variable, Fresnel and metallic rules.
+fn reflectivity(finish: &Finish, surface: DVec3, cos: f64, relative_ior: f64) -> DVec3 {
+    let Some(r) = &finish.reflection else {
+        return DVec3::ZERO;
+    };
+    let (min, max) = (r.min.rgb, r.max.rgb);
+    let mut value = if r.fresnel {
+        let f = fresnel(cos, relative_ior);
+        f * max + (1.0 - f) * min
+    } else {
+        let frac = if (r.falloff - 1.0).abs() > 1e-10 {
+            (1.0 - cos).max(0.0).powf(r.falloff)
+        } else {
+            1.0 - cos
+        };
+        if frac.abs() < 1e-10 {
+            min
+        } else if (frac - 1.0).abs() < 1e-10 {
+            max
+        } else {
+            frac * max + (1.0 - frac) * min
+        }
+    };
+    value *= metallic_tint(r.metallic, surface, cos);
+    value
+}
+
+/// The tint metallic surfaces give reflected light: the surface colour, fading to white at
+/// grazing angles by POV-Ray's empirical Fresnel curve.
+fn metallic_tint(metallic: f64, surface: DVec3, cos: f64) -> DVec3 {
+    if metallic == 0.0 {
+        return DVec3::ONE;
+    }
+    let x = cos.clamp(-1.0, 1.0).acos().abs() / std::f64::consts::FRAC_PI_2;
+    let f = (0.014_567_225 / ((x - 1.12) * (x - 1.12)) - 0.011_612_903).clamp(0.0, 1.0);
+    DVec3::ONE + (metallic * (1.0 - f)) * (surface - DVec3::ONE)
+}
+
+/// Fresnel reflectance of unpolarised light at relative index `n`.
+fn fresnel(cos: f64, n: f64) -> f64 {
+    let g2 = n * n + cos * cos - 1.0;
+    if g2 <= 0.0 {
+        return 1.0;
+    }
+    let g = g2.sqrt();
+    let a = (g - cos) / (g + cos);
+    let b = (cos * (g + cos) - 1.0) / (cos * (g - cos) + 1.0);
+    (0.5 * a * a * (1.0 + b * b)).clamp(0.0, 1.0)
 }
