@@ -85,9 +85,10 @@ impl Evaluator<'_> {
                 }
             }
             DEFAULT_KW => self.default_directive(),
-            FOPEN_KW | FCLOSE_KW | READ_KW | WRITE_KW => {
-                Err(self.unsupported(&keyword, &format!("#{}", self.text(&keyword))))
-            }
+            FOPEN_KW => self.fopen(),
+            FCLOSE_KW => self.fclose(),
+            READ_KW => self.read_directive(),
+            WRITE_KW => self.write_directive(),
             _ if !keyword.kind.is_keyword() && keyword.kind != IDENT => {
                 // POV-Ray ignores a '#' that no directive name follows.
                 self.warn_at(&hash, "stray '#' ignored");

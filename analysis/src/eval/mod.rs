@@ -10,6 +10,7 @@ mod camera;
 mod colour;
 mod directives;
 mod expr;
+mod file_io;
 mod function_body;
 mod light;
 mod macros;
@@ -122,6 +123,8 @@ pub struct Evaluation {
     pub messages: Vec<Message>,
     /// Every file read, so that diagnostics can be rendered with their source lines.
     pub sources: Sources,
+    /// Files the scene wrote with `#fopen`/`#write`, by name.
+    pub written: std::collections::BTreeMap<String, String>,
 }
 
 impl Evaluation {
@@ -157,6 +160,8 @@ pub(crate) struct Evaluator<'a> {
     pushed: Vec<Token>,
     /// The frame depths at which a declaration's value is being read, innermost last.
     declaring: Vec<usize>,
+    /// Files written with `#write`, by name.
+    written: std::collections::BTreeMap<String, String>,
     /// Files being included, innermost last, to catch cycles.
     include_stack: Vec<FileId>,
     steps: u64,
@@ -190,6 +195,7 @@ impl<'a> Evaluator<'a> {
             pushed: Vec::new(),
             declaring: Vec::new(),
             include_stack: Vec::new(),
+            written: std::collections::BTreeMap::new(),
             steps: 0,
             loop_iterations: 0,
             macro_depth: 0,
@@ -274,6 +280,7 @@ impl<'a> Evaluator<'a> {
             diagnostics,
             messages: self.messages,
             sources: self.sources,
+            written: self.written,
         }
     }
 

@@ -172,3 +172,22 @@ fn basic_scene_camera_follows_mirrored_right() {
     let expected_direction = 0.5 * 1.333 / (35f64.to_radians() / 2.0).tan();
     assert!((camera.direction.length() - expected_direction).abs() < 1e-9);
 }
+
+#[test]
+fn files_written_can_be_read_back() {
+    check_debug(
+        r#"#fopen F "data.txt" write
+#write (F, "\"name\",", -1.5, ",", <1, 2, 3>, "\n")
+#fclose F
+#fopen G "data.txt" read
+#read (G, S, A, V)
+#debug concat(S, " ", str(A, 0, 2), " ", vstr(3, V, ",", 0, 0), "\n")
+#read (G, Extra)
+#debug concat(str(defined(G), 0, 0), "\n")
+"#,
+        expect![[r#"
+            name -1.50 1,2,3
+            0
+        "#]],
+    );
+}

@@ -105,6 +105,8 @@ pub enum Value {
     Array(Rc<Array>),
     Dictionary(Rc<Dictionary>),
     Macro(Rc<MacroDef>),
+    /// A file handle opened by `#fopen`.
+    File(Rc<RefCell<super::file_io::OpenFile>>),
 }
 
 impl Value {
@@ -136,6 +138,7 @@ impl Value {
             Value::Array(_) => "array",
             Value::Dictionary(_) => "dictionary",
             Value::Macro(_) => "macro",
+            Value::File(_) => "file handle",
         }
     }
 
