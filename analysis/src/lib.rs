@@ -17,3 +17,8 @@ pub use files::{DirectoryFiles, FileSource, MemoryFiles, Sources};
 pub fn check(main: &str, files: &dyn FileSource, options: &EvalOptions) -> Evaluation {
     evaluate(main, files, options)
 }
+
+/// The syntax errors of one file's text, as diagnostics located in `name`.
+pub fn syntax_errors(name: &str, text: &str) -> Vec<syntax::Diagnostic> {
+    syntax::syntax_diagnostics(name, &syntax::parse(text))
+}

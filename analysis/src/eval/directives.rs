@@ -362,11 +362,12 @@ impl Evaluator<'_> {
                 dims.push(Some(size as usize));
                 self.expect(R_BRACK, "']'")?;
             }
-            at = self.next()?;
+            // Whether an initializer follows is only known from the next token.
+            at = self.guarded(Self::next)?;
         }
         if at.kind == MIXED_KW {
             mixed = true;
-            at = self.next()?;
+            at = self.guarded(Self::next)?;
         }
         if dims.is_empty() {
             return Err(self.error_at(&at, "expected '[' with the array's size"));
@@ -795,7 +796,7 @@ impl Evaluator<'_> {
                 "max-include-depth",
             ));
         }
-        self.lex_error(file)?;
+        self.syntax_check(file)?;
         let end = self.files[file as usize].tokens.len();
         self.include_stack.push(file);
         self.scopes.push(HashMap::new());

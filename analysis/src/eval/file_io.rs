@@ -94,7 +94,9 @@ impl Evaluator<'_> {
         self.expect(L_PAREN, "'('")?;
         let (handle, file) = self.file_handle()?;
         let mut text = String::new();
-        while self.eat(COMMA)? {
+        // Commas between the items are optional, as everywhere in POV-Ray's argument lists.
+        while !self.eat(R_PAREN)? {
+            self.eat(COMMA)?;
             let at = self.next()?;
             if matches!(
                 at.kind,
@@ -118,11 +120,12 @@ impl Evaluator<'_> {
                     text.push_str(&format!("<{}> ", parts.join(",")));
                 }
                 other => {
-                    return Err(self.error_at(&at, format!("cannot #write a {}", other.type_name())));
+                    return Err(
+                        self.error_at(&at, format!("cannot #write a {}", other.type_name()))
+                    );
                 }
             }
         }
-        self.expect(R_PAREN, "')'")?;
         let name = file.borrow().name.clone();
         if file.borrow().reading.is_some() {
             return Err(self.error_at(
@@ -140,7 +143,8 @@ impl Evaluator<'_> {
         self.expect(L_PAREN, "'('")?;
         let (handle, file) = self.file_handle()?;
         let handle_name = self.text(&handle).to_owned();
-        while self.eat(COMMA)? {
+        while !self.eat(R_PAREN)? {
+            self.eat(COMMA)?;
             let target = self.next_raw()?;
             if target.kind != IDENT {
                 return Err(self.error_at(
@@ -178,7 +182,6 @@ impl Evaluator<'_> {
                 Err(message) => return Err(self.error_at(&target, format!("#read: {message}"))),
             }
         }
-        self.expect(R_PAREN, "')'")?;
         Ok(())
     }
 

@@ -223,7 +223,7 @@ impl<'a> Evaluator<'a> {
                 format!("cannot read '{main}'"),
             )));
         };
-        self.lex_error(file)?;
+        self.syntax_check(file)?;
         let end = self.files[file as usize].tokens.len();
         self.include_stack.push(file);
         self.push_frame(Frame {
@@ -305,12 +305,18 @@ impl<'a> Evaluator<'a> {
         }
     }
 
-    /// The first lexical error of a freshly loaded file, as an evaluation error.
-    fn lex_error(&self, file: FileId) -> Result<()> {
-        match self.files[file as usize].lex_errors.first() {
-            Some(error) => Err(self.error_in(file, error.range, error.message.clone())),
-            None => Ok(()),
+    /// The syntax errors of a freshly loaded file stop the evaluation before any of its
+    /// tokens run, so every front end reports them the same way. All of a file's syntax
+    /// errors are reported at once; the first becomes the stopping error.
+    fn syntax_check(&mut self, file: FileId) -> Result<()> {
+        let source = &self.files[file as usize];
+        let mut errors = crate::syntax_errors(&source.name, &source.text);
+        if errors.is_empty() {
+            return Ok(());
         }
+        let first = errors.remove(0);
+        self.warnings.extend(errors);
+        Err(Box::new(first))
     }
 
     fn take_scene(&mut self) -> Scene {

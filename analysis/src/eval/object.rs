@@ -19,6 +19,7 @@ const UNSUPPORTED_SHAPES: &[SyntaxKind] = &[
     JULIA_FRACTAL_KW,
     LATHE_KW,
     LEMON_KW,
+    LIGHT_GROUP_KW,
     MESH_KW,
     MESH2_KW,
     OVUS_KW,

@@ -3,7 +3,7 @@
 
 use super::value::Slot;
 use syntax::SyntaxKind::{self, *};
-use syntax::lexer::{self, LexError};
+use syntax::lexer;
 use syntax::{Span, TextRange, TextSize};
 
 /// An index into the evaluator's list of loaded files.
@@ -15,7 +15,6 @@ pub struct SourceFile {
     pub name: String,
     pub text: std::sync::Arc<str>,
     pub tokens: Vec<RawToken>,
-    pub lex_errors: Vec<LexError>,
 }
 
 /// A significant token of a loaded file.
@@ -39,12 +38,7 @@ impl SourceFile {
                 end: t.range.end().into(),
             })
             .collect();
-        SourceFile {
-            name,
-            text,
-            tokens,
-            lex_errors: lexed.errors,
-        }
+        SourceFile { name, text, tokens }
     }
 }
 
