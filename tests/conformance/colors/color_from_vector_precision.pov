@@ -1,0 +1,5 @@
+#version 3.7;
+#declare V = <0.1, 0.2, 0.3>;
+#declare C = color V;
+#debug concat("C.red = ", str(C.red, 0, 12), "\n")
+#debug concat("C.green = ", str(C.green, 0, 12), "\n")

@@ -1,0 +1,4 @@
+#version 3.7;
+#switch (3)
+  #else #debug "only else\n"
+#end

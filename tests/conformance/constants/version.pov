@@ -1,0 +1,2 @@
+#version 3.7;
+#debug concat("version = ", str(version, 0, 6), "\n")

@@ -1,0 +1,3 @@
+#version 3.7;
+#undef Never
+#debug "still running\n"

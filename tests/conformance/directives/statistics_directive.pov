@@ -1,0 +1,4 @@
+#version 3.7;
+#debug "before\n"
+#statistics "stats text\n"
+#debug "after\n"

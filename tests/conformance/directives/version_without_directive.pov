@@ -1,0 +1,1 @@
+#debug concat("version = ", str(version, 0, 2), "\n")

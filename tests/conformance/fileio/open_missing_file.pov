@@ -1,0 +1,3 @@
+#version 3.7;
+#debug "before\n"
+#fopen F "missing.txt" read

@@ -1,0 +1,3 @@
+#version 3.7;
+#debug "before\n"
+#declare F = function { x + true }

@@ -1,0 +1,5 @@
+#version 3.7;
+#declare F = function { x }
+#debug "before\n"
+#declare F = function { y }
+#debug concat("F(1, 2, 3) = ", str(F(1, 2, 3), 0, 0), "\n")

@@ -1,0 +1,6 @@
+#version 3.7;
+#macro Hello()
+  #debug "hello from macro\n"
+#end
+Hello()
+Hello()

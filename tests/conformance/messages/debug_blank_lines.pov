@@ -1,0 +1,3 @@
+#version 3.7;
+#debug "\n\n"
+#debug "after blanks\n"

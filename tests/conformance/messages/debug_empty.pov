@@ -1,0 +1,3 @@
+#version 3.7;
+#debug ""
+#debug "after empty\n"

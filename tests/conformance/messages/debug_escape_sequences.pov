@@ -1,0 +1,2 @@
+#version 3.7;
+#debug "a\tb\\c\"d\n"

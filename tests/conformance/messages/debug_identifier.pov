@@ -1,0 +1,3 @@
+#version 3.7;
+#declare S = "from identifier\n";
+#debug S

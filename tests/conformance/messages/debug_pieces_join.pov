@@ -1,0 +1,4 @@
+#version 3.7;
+#debug "one "
+#debug "two "
+#debug "three\n"

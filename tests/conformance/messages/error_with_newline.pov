@@ -1,0 +1,2 @@
+#version 3.7;
+#error "stop\n"

@@ -1,0 +1,3 @@
+#version 3.7;
+#warning "careful"
+#debug "after warning\n"

@@ -1,0 +1,4 @@
+#version 3.7;
+#debug "first\n"
+#warning "middle"
+#debug "last\n"

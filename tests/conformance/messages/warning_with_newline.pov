@@ -1,0 +1,3 @@
+#version 3.7;
+#warning "two\nlines"
+#debug "after warning\n"

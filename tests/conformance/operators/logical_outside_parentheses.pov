@@ -1,0 +1,4 @@
+#version 3.7;
+#debug "before\n"
+#declare A = 1 & 1;
+#debug concat("A = ", str(A, 0, 0), "\n")

@@ -1,0 +1,4 @@
+#version 3.7;
+#debug concat("!1e-11 = ", str(!1e-11, 0, 0), "\n")
+#debug concat("!1e-9 = ", str(!1e-9, 0, 0), "\n")
+#debug concat("!-1e-11 = ", str(!-1e-11, 0, 0), "\n")

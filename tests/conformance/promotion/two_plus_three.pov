@@ -1,0 +1,3 @@
+#version 3.7;
+#declare A = <1,2> + <1,2,3>;
+#debug concat("A = <", vstr(5, A, ", ", 0, 1), ">\n")

@@ -1,0 +1,5 @@
+#version 3.7;
+#declare R = seed(5000000000);
+#for (I, 1, 5)
+  #debug concat(str(rand(R), 0, 12), "\n")
+#end

@@ -1,0 +1,9 @@
+#version 3.7;
+#declare S = spline {
+  0, <0, 0, 0>
+  1, <1, 2, 0>
+  2, <3, 1, 1>
+}
+#for (T, 0, 2, 0.25)
+  #debug concat(str(T, 5, 2), ": <", vstr(3, S(T), ", ", 0, 6), ">\n")
+#end

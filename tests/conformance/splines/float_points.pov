@@ -1,0 +1,10 @@
+#version 3.7;
+#declare S = spline {
+  linear_spline
+  0, 0
+  1, 1
+  2, 4
+}
+#for (T, 0, 2, 0.5)
+  #debug concat(str(T, 5, 2), ": <", vstr(3, S(T), ", ", 0, 6), ">\n")
+#end

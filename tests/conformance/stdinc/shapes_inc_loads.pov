@@ -1,0 +1,3 @@
+#version 3.7;
+#include "shapes.inc"
+#debug "shapes.inc loaded\n"

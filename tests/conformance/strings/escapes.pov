@@ -1,0 +1,2 @@
+#version 3.7;
+#debug "tab:[\t] backslash:[\\] quote:[\"] apostrophe:[\']\n"
