@@ -2,6 +2,7 @@
 //! build output are, the `povrayst` binary, and the Typst compiler with the package.
 
 pub mod broken_scenes;
+pub mod conformance;
 pub mod fidelity;
 pub mod image_compare;
 pub mod typst_compiler;
