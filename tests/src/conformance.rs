@@ -5,8 +5,6 @@
 
 use analysis::{EvalOptions, MemoryFiles, Stream};
 use std::path::{Path, PathBuf};
-use syntax::Diagnostic;
-use syntax::line_index::LineIndex;
 
 /// The suite's directory.
 pub fn suite_dir() -> PathBuf {
@@ -125,18 +123,14 @@ impl Located {
         })
     }
 
-    /// Where one of our diagnostics points, in the same terms.
-    fn of(diagnostic: &Diagnostic, evaluation: &analysis::Evaluation) -> Located {
-        let text = evaluation
-            .sources
-            .get(&diagnostic.span.file)
-            .map(|t| t.to_string())
-            .unwrap_or_default();
-        let line = LineIndex::new(&text).line(diagnostic.span.range.start()) + 1;
+    /// Where one of our diagnostics points (file, byte offset, message), in the same terms.
+    fn of(file: &str, offset: u32, message: &str, evaluation: &analysis::Evaluation) -> Located {
+        let text = evaluation.sources.get(file).map(|t| &**t).unwrap_or("");
+        let before = text.get(..offset as usize).unwrap_or(text);
         Located {
-            file: diagnostic.span.file.clone(),
-            line,
-            message: diagnostic.message.clone(),
+            file: file.to_owned(),
+            line: before.matches('\n').count() as u32 + 1,
+            message: message.to_owned(),
         }
     }
 
@@ -191,7 +185,10 @@ pub fn check(program: &Program) -> Vec<String> {
         .diagnostics
         .iter()
         .find(|d| d.is_error())
-        .map(|d| Located::of(d, &evaluation));
+        .map(|d| {
+            let start = u32::from(d.span.range.start());
+            Located::of(&d.span.file, start, &d.message, &evaluation)
+        });
     let theirs = program.expectation("err").map(|text| {
         Located::parse(text.trim_end()).unwrap_or_else(|| panic!("{}.err: `{text}`", program.id()))
     });
@@ -213,7 +210,10 @@ pub fn check(program: &Program) -> Vec<String> {
         .diagnostics
         .iter()
         .filter(|d| !d.is_error())
-        .map(|d| Located::of(d, &evaluation))
+        .map(|d| {
+            let start = u32::from(d.span.range.start());
+            Located::of(&d.span.file, start, &d.message, &evaluation)
+        })
         .collect();
     for line in program.expectation("warn").unwrap_or_default().lines() {
         let theirs =
