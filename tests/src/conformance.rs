@@ -177,7 +177,12 @@ pub fn check(program: &Program) -> Vec<String> {
         .map(|m| m.text.as_str())
         .collect();
     let expected = program.expectation("out").unwrap_or_default();
-    if let Some(difference) = first_difference(&expected, &printed) {
+    // A syntax error stops us before anything runs, where POV-Ray, which parses as it runs,
+    // has printed what came before it: a program that fails may print nothing.
+    let stopped_silently = printed.is_empty() && evaluation.has_errors();
+    if let Some(difference) = first_difference(&expected, &printed)
+        && !(stopped_silently && program.expectation("err").is_some())
+    {
         findings.push(difference);
     }
 
@@ -343,6 +348,16 @@ mod tests {
             ),
         ]);
         assert_eq!(check(&program).len(), 1);
+    }
+
+    #[test]
+    fn a_syntax_error_may_stop_before_any_output() {
+        let (_root, program) = suite(&[
+            ("p.pov", "#version 3.7;\n#debug \"before\\n\"\n#end\n"),
+            ("p.out", "before\n"),
+            ("p.err", "p.pov:3: Parse Error: Mis-matched '#end'.\n"),
+        ]);
+        assert_eq!(check(&program), Vec::<String>::new());
     }
 
     #[test]
