@@ -5,17 +5,29 @@
 pub mod eval;
 pub mod files;
 pub mod function;
+pub mod geometry;
 pub mod scene;
 pub mod stdinc;
 
-pub use eval::{Budgets, EvalOptions, Evaluation, Message, Stream, evaluate};
+pub use eval::{Budgets, EvalOptions, Evaluation, Message, Stream, evaluate, evaluate_with};
 pub use files::{DirectoryFiles, FileSource, MemoryFiles, Sources};
+pub use geometry::{Geometry, NoGeometry};
 
 /// Checks a scene the way every front end does: the syntax errors of the main file first;
 /// when there are none, the evaluator's findings. The CLI's `check`, the renderer pipeline,
 /// the Typst plugin and the language server all call this, so they report the same errors.
 pub fn check(main: &str, files: &dyn FileSource, options: &EvalOptions) -> Evaluation {
     evaluate(main, files, options)
+}
+
+/// [`check`] with a renderer answering `trace()`, `inside()` and the extents.
+pub fn check_with(
+    main: &str,
+    files: &dyn FileSource,
+    options: &EvalOptions,
+    geometry: &dyn Geometry,
+) -> Evaluation {
+    evaluate_with(main, files, options, geometry)
 }
 
 /// The syntax errors of one file's text, as diagnostics located in `name`.

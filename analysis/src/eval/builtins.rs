@@ -336,9 +336,84 @@ impl Evaluator<'_> {
                 };
                 Ok(Some(Value::String(out.into())))
             }
-            TRACE_KW | INSIDE_KW | MIN_EXTENT_KW | MAX_EXTENT_KW | VTURBULENCE_KW | DATETIME_KW
-            | NOW_KW => Err(self.unsupported(token, &format!("{}()", self.text(token)))),
+            TRACE_KW => self.trace_call(token),
+            INSIDE_KW => {
+                self.expect(L_PAREN, "'('")?;
+                let object = self.object_argument()?;
+                self.expect(COMMA, "','")?;
+                let point = self.vector_in_parens()?;
+                self.expect(R_PAREN, "')'")?;
+                let inside = self
+                    .geometry
+                    .inside(&object, point)
+                    .map_err(|m| self.error_at(token, m))?;
+                float(f64::from(u8::from(inside)))
+            }
+            MIN_EXTENT_KW | MAX_EXTENT_KW => {
+                self.expect(L_PAREN, "'('")?;
+                let object = self.object_argument()?;
+                self.expect(R_PAREN, "')'")?;
+                let (min, max) = self
+                    .geometry
+                    .extent(&object)
+                    .map_err(|m| self.error_at(token, m))?;
+                Ok(Some(vec3(if kind == MIN_EXTENT_KW { min } else { max })))
+            }
+            VTURBULENCE_KW | DATETIME_KW | NOW_KW => {
+                Err(self.unsupported(token, &format!("{}()", self.text(token))))
+            }
             _ => Ok(None),
+        }
+    }
+
+    /// `trace(Object, Start, Direction [, NormalIdent])`, after `trace`.
+    fn trace_call(&mut self, token: &Token) -> Result<Option<Value>> {
+        self.expect(L_PAREN, "'('")?;
+        let object = self.object_argument()?;
+        self.expect(COMMA, "','")?;
+        let origin = self.vector_in_parens()?;
+        self.expect(COMMA, "','")?;
+        let direction = self.vector_in_parens()?;
+        let normal_slot = if self.eat(COMMA)? {
+            let name = self.next_raw()?;
+            let text = self.text(&name).to_owned();
+            if self.lookup(&text).is_none() {
+                self.declare(&text, Value::Vector(Terms::new(&[0.0, 0.0, 0.0])));
+            }
+            self.lookup(&text)
+        } else {
+            None
+        };
+        self.expect(R_PAREN, "')'")?;
+        let hit = self
+            .geometry
+            .trace(&object, origin, direction)
+            .map_err(|m| self.error_at(token, m))?;
+        let (point, normal) = hit.unwrap_or((DVec3::ZERO, DVec3::ZERO));
+        if let Some(slot) = normal_slot {
+            *slot.borrow_mut() = vec3(normal);
+        }
+        Ok(Some(vec3(point)))
+    }
+
+    /// An object argument: a declared object or an object statement.
+    fn object_argument(&mut self) -> Result<crate::scene::Object> {
+        let token = self.next()?;
+        if Self::starts_object(token.kind) {
+            self.unget(token);
+            return self.object();
+        }
+        match token.slot.as_ref().map(|s| s.borrow().clone()) {
+            Some(Value::Object(object)) => Ok(crate::scene::Object::clone(&object)),
+            Some(other) => Err(self.error_at(
+                &token,
+                format!("expected an object, found {}", other.type_name()),
+            )),
+            None if token.kind == IDENT => Err(self.undeclared(&token)),
+            None => Err(self.error_at(
+                &token,
+                format!("expected an object, found {}", self.describe(&token)),
+            )),
         }
     }
 

@@ -141,7 +141,17 @@ impl Evaluation {
 /// Evaluates the scene `main`, reading it and its includes from `files` and then from the
 /// standard includes.
 pub fn evaluate(main: &str, files: &dyn FileSource, options: &EvalOptions) -> Evaluation {
-    let mut evaluator = Evaluator::new(files, options);
+    evaluate_with(main, files, options, &crate::geometry::NoGeometry)
+}
+
+/// [`evaluate`] with a renderer answering the scene's geometric queries.
+pub fn evaluate_with(
+    main: &str,
+    files: &dyn FileSource,
+    options: &EvalOptions,
+    geometry: &dyn crate::geometry::Geometry,
+) -> Evaluation {
+    let mut evaluator = Evaluator::new(files, options, geometry);
     let outcome = evaluator.run(main);
     evaluator.finish(outcome)
 }
@@ -149,6 +159,7 @@ pub fn evaluate(main: &str, files: &dyn FileSource, options: &EvalOptions) -> Ev
 /// The state of one evaluation.
 pub(crate) struct Evaluator<'a> {
     source: &'a dyn FileSource,
+    geometry: &'a dyn crate::geometry::Geometry,
     options: &'a EvalOptions,
     files: Vec<SourceFile>,
     file_ids: HashMap<String, FileId>,
@@ -183,9 +194,14 @@ pub(crate) struct Evaluator<'a> {
 }
 
 impl<'a> Evaluator<'a> {
-    fn new(source: &'a dyn FileSource, options: &'a EvalOptions) -> Self {
+    fn new(
+        source: &'a dyn FileSource,
+        options: &'a EvalOptions,
+        geometry: &'a dyn crate::geometry::Geometry,
+    ) -> Self {
         Evaluator {
             source,
+            geometry,
             options,
             files: Vec::new(),
             file_ids: HashMap::new(),

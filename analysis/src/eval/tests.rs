@@ -191,3 +191,79 @@ fn files_written_can_be_read_back() {
         "#]],
     );
 }
+
+/// A stand-in renderer that knows spheres only, to test the calls that ask it.
+struct SpheresOnly;
+
+impl crate::geometry::Geometry for SpheresOnly {
+    fn trace(
+        &self,
+        object: &crate::scene::Object,
+        origin: glam::DVec3,
+        direction: glam::DVec3,
+    ) -> std::result::Result<Option<(glam::DVec3, glam::DVec3)>, String> {
+        let Shape::Sphere { center, radius } = object.shape else {
+            return Err("spheres only".into());
+        };
+        let d = direction.normalize();
+        let oc = origin - center;
+        let b = oc.dot(d);
+        let disc = b * b - (oc.length_squared() - radius * radius);
+        if disc < 0.0 {
+            return Ok(None);
+        }
+        let t = -b - disc.sqrt();
+        let p = origin + d * t;
+        Ok(Some((p, (p - center) / radius)))
+    }
+
+    fn inside(
+        &self,
+        object: &crate::scene::Object,
+        point: glam::DVec3,
+    ) -> std::result::Result<bool, String> {
+        let Shape::Sphere { center, radius } = object.shape else {
+            return Err("spheres only".into());
+        };
+        Ok((point - center).length() < radius)
+    }
+
+    fn extent(
+        &self,
+        object: &crate::scene::Object,
+    ) -> std::result::Result<(glam::DVec3, glam::DVec3), String> {
+        let Shape::Sphere { center, radius } = object.shape else {
+            return Err("spheres only".into());
+        };
+        Ok((center - radius, center + radius))
+    }
+}
+
+#[test]
+fn trace_inside_and_extents_ask_the_renderer() {
+    let text = r#"#version 3.7;
+#declare S = sphere { <0, 1, 0>, 2 }
+#declare P = trace(S, <0, 10, 0>, -y, N);
+#debug concat(vstr(3, P, ",", 0, 1), " ", vstr(3, N, ",", 0, 1), "\n")
+#debug concat(str(inside(S, <0, 2, 0>), 0, 0), str(inside(S, 5), 0, 0), "\n")
+#debug concat(vstr(3, min_extent(S), ",", 0, 0), " ", vstr(3, max_extent(S), ",", 0, 0), "\n")
+"#;
+    let files = MemoryFiles::new().with("scene.pov", text);
+    let evaluation = evaluate_with("scene.pov", &files, &EvalOptions::default(), &SpheresOnly);
+    expect![[r#"
+        0.0,3.0,0.0 0.0,1.0,0.0
+        10
+        -2,-1,-2 2,3,2
+    "#]]
+    .assert_eq(&evaluation.debug_text());
+    let refused = eval("#declare P = trace(sphere { 0, 1 }, 5, -x);");
+    expect![[r#"
+        scene.pov:1:14: error: this front end cannot answer geometric queries (trace, inside, extents)
+            1 | #declare P = trace(sphere { 0, 1 }, 5, -x);
+              |              ^~~~~
+    "#]]
+    .assert_eq(&syntax::diagnostic::render_human(
+        &refused.diagnostics.into_iter().filter(|d| d.is_error()).collect::<Vec<_>>(),
+        &refused.sources,
+    ));
+}
