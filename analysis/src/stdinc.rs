@@ -7,6 +7,9 @@
 const FILES: &[(&str, &str)] = &[
     ("colors.inc", include_str!("../stdinc/colors.inc")),
     ("consts.inc", include_str!("../stdinc/consts.inc")),
+    ("functions.inc", include_str!("../stdinc/functions.inc")),
+    ("math.inc", include_str!("../stdinc/math.inc")),
+    ("transforms.inc", include_str!("../stdinc/transforms.inc")),
 ];
 
 /// The text of the standard include file a scene names, such as `"colors.inc"`.
