@@ -9,6 +9,9 @@ const FILES: &[(&str, &str)] = &[
     ("consts.inc", include_str!("../stdinc/consts.inc")),
     ("functions.inc", include_str!("../stdinc/functions.inc")),
     ("math.inc", include_str!("../stdinc/math.inc")),
+    ("shapes.inc", include_str!("../stdinc/shapes.inc")),
+    ("shapes_old.inc", include_str!("../stdinc/shapes_old.inc")),
+    ("strings.inc", include_str!("../stdinc/strings.inc")),
     ("transforms.inc", include_str!("../stdinc/transforms.inc")),
 ];
 

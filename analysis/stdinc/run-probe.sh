@@ -14,9 +14,12 @@ cp "$probe" "$work/probe.pov"
 # searched before any library path; that keeps the other set of files out of the way.
 # An empty POVINI keeps the system povray.ini's library paths out as well.
 cp "$include_dir"/*.inc "$work"/
+# Fonts are data that scenes name, not include files; both sets of includes use POV-Ray's.
+cp /usr/share/povray-3.7/include/*.ttf "$work"/
 : >"$work/empty.ini"
 (cd "$work" && POVINI="$work/empty.ini" timeout 300 povray +Iprobe.pov -D -F +W1 +H1 -GA +GDdebug.txt +GFfatal.txt >/dev/null 2>&1) || {
-    echo "run-probe.sh: povray failed on $probe:" >&2
+    echo "run-probe.sh: povray failed on $probe; its last output and error:" >&2
+    tail -3 "$work/debug.txt" >&2 || true
     cat "$work/fatal.txt" >&2 || true
     exit 1
 }
