@@ -47,6 +47,19 @@ impl Bvh {
         }
     }
 
+    /// Whether `p` is inside any object.
+    pub fn contains(&self, p: glam::DVec3) -> bool {
+        self.objects
+            .iter()
+            .chain(&self.unbounded)
+            .any(|o| o.inside(p))
+    }
+
+    /// Whether some object is unbounded (a plane, say).
+    pub fn has_unbounded(&self) -> bool {
+        !self.unbounded.is_empty()
+    }
+
     /// Bounds of every bounded object; empty when there is none.
     pub fn bounds(&self) -> Aabb {
         self.nodes.first().map_or(Aabb::EMPTY, |n| n.bounds)

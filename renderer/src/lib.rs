@@ -6,6 +6,7 @@ mod build;
 mod bvh;
 mod camera;
 mod colour;
+mod geometry;
 mod image;
 mod light;
 mod material;
@@ -23,6 +24,7 @@ mod shapes;
 mod tracer;
 
 pub use build::BuildError;
+pub use geometry::SceneGeometry;
 pub use image::Image;
 pub use options::{Extent, Gamma, RenderOptions};
 pub use png_output::encode_png;

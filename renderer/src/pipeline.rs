@@ -51,7 +51,7 @@ pub fn render_source(
         clock: options.clock.unwrap_or(0.0),
         ..EvalOptions::default()
     };
-    let evaluation = analysis::check(main, files, &eval_options);
+    let evaluation = analysis::check_with(main, files, &eval_options, &crate::SceneGeometry);
     let scene = match evaluation.scene {
         Some(scene) if !evaluation.diagnostics.iter().any(Diagnostic::is_error) => scene,
         _ => {

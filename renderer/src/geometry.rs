@@ -1,0 +1,73 @@
+//! Answers the evaluator's geometric queries (`trace()`, `inside()`, `min_extent()`,
+//! `max_extent()`) with the renderer's own shapes, so parse-time answers agree with the
+//! picture.
+
+use crate::build::{BuildSettings, build_world};
+use crate::object::Query;
+use crate::ray::{Ray, RayKind};
+use crate::tracer::World;
+use analysis::scene::{Object, Scene};
+use glam::DVec3;
+
+/// The extent POV-Ray gives unbounded objects.
+const HUGE_BOUND: f64 = 2.0e10;
+
+/// The renderer's implementation of [`analysis::Geometry`].
+#[derive(Debug, Clone, Copy, Default)]
+pub struct SceneGeometry;
+
+/// A world holding just `object`, as the renderer would build it.
+fn world_of(object: &Object) -> Result<World, String> {
+    let scene = Scene {
+        camera: Default::default(),
+        lights: Vec::new(),
+        objects: vec![object.clone()],
+        background: None,
+        fogs: Vec::new(),
+        sky_spheres: Vec::new(),
+        settings: Default::default(),
+        version: None,
+    };
+    let settings = BuildSettings {
+        quality: 9,
+        output_alpha: false,
+        max_trace_level: None,
+    };
+    build_world(&scene, settings).map_err(|error| error.message)
+}
+
+impl analysis::Geometry for SceneGeometry {
+    fn trace(
+        &self,
+        object: &Object,
+        origin: DVec3,
+        direction: DVec3,
+    ) -> Result<Option<(DVec3, DVec3)>, String> {
+        let direction = direction.normalize_or_zero();
+        if direction == DVec3::ZERO {
+            return Err("trace() needs a non-zero direction".into());
+        }
+        let world = world_of(object)?;
+        let ray = Ray::new(origin, direction);
+        let query = Query::new(ray, RayKind::Primary, 0.0, f64::INFINITY);
+        let mut scratch = Vec::new();
+        Ok(world.bvh.nearest(&query, &mut scratch).map(|hit| {
+            let point = ray.at(hit.t);
+            (point, hit.leaf.normal(point, hit.part))
+        }))
+    }
+
+    fn inside(&self, object: &Object, point: DVec3) -> Result<bool, String> {
+        Ok(world_of(object)?.bvh.contains(point))
+    }
+
+    fn extent(&self, object: &Object) -> Result<(DVec3, DVec3), String> {
+        let world = world_of(object)?;
+        if world.bvh.has_unbounded() {
+            // POV-Ray reports infinite objects with its "huge" bound.
+            return Ok((DVec3::splat(-HUGE_BOUND), DVec3::splat(HUGE_BOUND)));
+        }
+        let bounds = world.bvh.bounds();
+        Ok((bounds.min, bounds.max))
+    }
+}
