@@ -5,7 +5,8 @@
 #   <name>.err   when povray fails: "<file>:<line>: <message>" from the Fatal stream;
 #   <name>.warn  when the program uses #warning: one "<file>:<line>: <message>" per warning.
 # Usage: regenerate.sh [PROGRAM.pov...]   (no arguments: every program)
-# The options below are the ones the runner (tests/tests/conformance.rs) evaluates with.
+# The runner (tests::conformance::options in tests/src/conformance.rs) evaluates with the same
+# image size and clock.
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
@@ -73,6 +74,7 @@ run_one() {
         rm -f "$dir/$name.err"
     fi
     if grep -q '#warning' "$pov"; then
+        touch "$work/warning.txt"
         user_warnings <"$work/warning.txt" >"$dir/$name.warn"
     else
         rm -f "$dir/$name.warn"
@@ -95,6 +97,7 @@ fi
 export -f run_one located_messages user_warnings
 export include_dir
 export options_string="${options[*]}"
+# POV-Ray spends most of a run waiting, not computing, so run several per core.
 printf '%s\0' "${programs[@]}" |
     xargs -0 -n 1 -P "$(( $(nproc) * 4 ))" bash -c 'read -r -a options <<<"$options_string"; run_one "$1"' _
 echo "regenerated ${#programs[@]} programs"
