@@ -2,8 +2,8 @@
 //! and compared with what POV-Ray printed for it (see `tests/conformance/README.md`).
 //!
 //! Programs listed in `tests/conformance/expected_failures.txt` are known to differ today.
-//! The test fails when a program outside the list differs, and when a listed one conforms, so
-//! the list only shrinks; `UPDATE_EXPECT=1` rewrites it. `CONFORMANCE=<prefix>` (say
+//! The test fails when a program outside the list differs; it names the listed ones that now
+//! conform, and `UPDATE_EXPECT=1` rewrites the list. `CONFORMANCE=<prefix>` (say
 //! `strings/` or `rand/seed_0`) checks only the matching programs and prints every finding.
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -11,7 +11,7 @@ use tests::conformance::{check, programs, suite_dir};
 
 const EXPECTED_FAILURES_HEADER: &str = "\
 # Conformance programs that differ from POV-Ray 3.7 today, one `group/name` a line.
-# tests/tests/conformance.rs fails when this list is out of date; regenerate it with
+# tests/tests/conformance.rs fails when a program not listed differs; regenerate the list with
 #   UPDATE_EXPECT=1 cargo test -p tests --test conformance
 ";
 
@@ -83,13 +83,13 @@ fn programs_print_what_povray_prints() {
             ));
         }
     }
+    // Progress elsewhere (the evaluator's own commits) must not turn this test red, so a
+    // listed program that now conforms is only reported; UPDATE_EXPECT=1 takes it off.
     for id in listed
         .iter()
         .filter(|id| ids.contains(*id) && !failing.contains_key(*id))
     {
-        problems.push(format!(
-            "{id} now conforms: remove it from expected_failures.txt (UPDATE_EXPECT=1)"
-        ));
+        eprintln!("{id} now conforms: UPDATE_EXPECT=1 removes it from expected_failures.txt");
     }
     assert!(problems.is_empty(), "{}", problems.join("\n"));
 }
