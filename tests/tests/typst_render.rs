@@ -188,6 +188,11 @@ fn scene_errors_are_the_gcc_style_report() {
             ", includes: (\"materials.inc\": \"#declare Copper = texture {\\n  pigment { color\\n  rgb Tint }\\n}\\n\")",
         ),
         (
+            "binary file",
+            "sphere { 0, 1 }\n",
+            ", files: (\"map.png\": bytes((137, 80, 78, 71)))",
+        ),
+        (
             "unknown extra option",
             "sphere { 0, 1 }\n",
             ", extra: (\"+A0.1\", \"Frobnicate=on\")",
@@ -237,6 +242,8 @@ fn scene_errors_are_the_gcc_style_report() {
             1 | #include "materials.inc"
               |          ^~~~~~~~~~~~~~~
 
+        --- binary file
+        plugin errored with: files: map.png: not supported yet: binary files (image maps, height fields, fonts)
         --- unknown extra option
         plugin errored with: extra: option `Frobnicate=on`: unknown option"#]].assert_eq(&reports.join("\n"));
 }
