@@ -45,36 +45,43 @@ fn with_operators<R>(
 
 /// A bracketed region, `{ }`, `( )` or `[ ]`, parsed up to the closer the pre-pass
 /// matched with its opener, so that a missing closer is reported once, at the opener.
-/// Tokens `body` leaves before the closer become one error.
+/// Tokens `body` leaves before the closer become one error. In a `( )` or `[ ]` that is
+/// never closed, `body` stops at the first token that does not fit (see
+/// [`Parser::lenient_end`]) and the rest is left to the enclosing rule.
 fn delimited(p: &mut Parser<'_>, close: SyntaxKind, body: impl FnOnce(&mut Parser<'_>)) {
     let open = p.pos();
     let open_kind = p.current();
-    match p.mark(open) {
-        Mark::Open { end, closed } => {
-            p.bump_any();
-            p.with_limit(end as usize, |p| {
-                body(p);
-                if !p.at_end() {
-                    let found = p.describe_current();
-                    p.err_and_bump_run(
-                        &format!("unexpected {found} before {}", describe_kind(close)),
-                        crate::parsing::TokenSet::EMPTY,
-                    );
-                }
-            });
-            if closed {
-                p.bump(close);
-            } else {
-                let range = p.range_of(open);
-                p.error_at(range, format!("unclosed {}", describe_kind(open_kind)));
-            }
+    let (end, closed) = match p.mark(open) {
+        Mark::Open { end, closed } => (Some(end as usize), closed),
+        // Not seen by the pre-pass, which sees everything parsed structurally; kept
+        // for robustness.
+        _ => (None, false),
+    };
+    p.bump_any();
+    let saved = p.lenient_end;
+    p.lenient_end = !closed && open_kind != L_BRACE;
+    p.with_limit(end.unwrap_or(usize::MAX), |p| {
+        body(p);
+        if closed && !p.at_end() {
+            let found = p.describe_current();
+            p.err_and_bump_run(
+                &format!("unexpected {found} before {}", describe_kind(close)),
+                crate::parsing::TokenSet::EMPTY,
+            );
         }
-        _ => {
-            // Brackets in text the pre-pass does not see (it sees all that is parsed
-            // structurally), kept for robustness.
-            p.bump_any();
-            body(p);
-            p.expect(close, &describe_kind(close));
-        }
+    });
+    p.lenient_end = saved;
+    if closed {
+        p.bump(close);
+    } else if end.is_some() {
+        let range = p.range_of(open);
+        p.error_at(range, format!("unclosed {}", describe_kind(open_kind)));
+    } else {
+        p.expect(close, &describe_kind(close));
     }
+}
+
+/// Whether the bracket at the current token is never closed.
+fn at_unclosed(p: &Parser<'_>) -> bool {
+    matches!(p.mark(p.pos()), Mark::Open { closed: false, .. })
 }

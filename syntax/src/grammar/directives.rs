@@ -6,7 +6,6 @@ use super::expressions;
 use super::items::{block_body, item_list, name, opt_value, param_list};
 use crate::SyntaxKind::{self, *};
 use crate::parsing::{Group, GroupKind, Mark, Mode, Parser};
-use rowan::TextRange;
 
 /// A directive at a `#`.
 pub(super) fn directive(p: &mut Parser<'_>) {
@@ -29,11 +28,6 @@ pub(super) fn directive(p: &mut Parser<'_>) {
         _ => simple(p),
     }
     p.after_directive = true;
-}
-
-/// The `#` and keyword of a directive, for error messages.
-fn keyword_range(p: &Parser<'_>, hash: usize) -> TextRange {
-    p.range_of(hash).cover(p.range_of(hash + 1))
 }
 
 fn simple(p: &mut Parser<'_>) {
@@ -67,22 +61,12 @@ fn lone_hash(p: &mut Parser<'_>) {
 // #else
 // sphere { 0, 1 }
 // #end
-/// An `#else`, `#case` or `#end` that belongs to nothing.
+/// An `#else`, `#case` or `#end` that belongs to nothing (reported with the structure,
+/// see `parsing::directive_errors`).
 fn stray(p: &mut Parser<'_>) {
     let m = p.start();
-    let hash = p.pos();
-    let keyword = p.nth(1);
-    let range = keyword_range(p, hash);
     p.bump(HASH);
     p.bump_any();
-    let message = match keyword {
-        ELSE_KW => "#else without #if or #switch",
-        ELSEIF_KW => "#elseif without #if",
-        CASE_KW => "#case outside #switch",
-        RANGE_KW => "#range outside #switch",
-        _ => "#end without #if, #while, #for, #switch or #macro",
-    };
-    p.error_at(range, message);
     m.complete(p, ERROR_NODE);
 }
 
@@ -130,11 +114,10 @@ fn tree_group(p: &mut Parser<'_>, group: &Group) {
 
 /// The `#end` of a group, or the error for its absence.
 fn end(p: &mut Parser<'_>, group: &Group) {
+    // A missing `#end` is reported with the structure, see `parsing::directive_errors`.
     if group.end.is_some() && p.at(HASH) {
         p.bump(HASH);
         p.bump(END_KW);
-    } else {
-        missing_end(p, group);
     }
 }
 
@@ -145,13 +128,6 @@ fn end(p: &mut Parser<'_>, group: &Group) {
 //   #local I = I + 1;
 // #end
 // camera { }
-fn missing_end(p: &mut Parser<'_>, group: &Group) {
-    let open = group.open as usize;
-    let range = keyword_range(p, open);
-    let name = p.kind_at(open + 1).keyword_text().unwrap_or("directive");
-    p.error_at(range, format!("#{name} has no matching #end"));
-}
-
 fn body(p: &mut Parser<'_>, group: &Group) {
     if group.kind == GroupKind::Macro {
         macro_body(p);
@@ -220,9 +196,6 @@ fn inline_open(p: &mut Parser<'_>, group: &Group, active: usize) {
 fn inline_tail(p: &mut Parser<'_>, group: &Group) {
     let m = p.start();
     p.bump_until(group.after() as usize);
-    if group.end.is_none() {
-        missing_end(p, group);
-    }
     m.complete(p, INACTIVE);
 }
 

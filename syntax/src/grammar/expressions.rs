@@ -4,7 +4,7 @@
 
 use super::items::{opt_value, too_deep};
 use super::vocabulary::{COLOR_COMPONENTS, COLOR_STARTS, COLOR_VECTORS, CONSTANTS, FUNCTIONS};
-use super::{delimited, directives, with_operators};
+use super::{at_unclosed, delimited, directives, with_operators};
 use crate::SyntaxKind::{self, *};
 use crate::parsing::{CompletedMarker, DEPTH_LIMIT, Parser, TokenSet};
 
@@ -210,7 +210,8 @@ pub(super) fn arg_list(p: &mut Parser<'_>) {
     // Arguments are plain expressions, as outside parentheses: `max(1 < 2)` is an
     // error in POV-Ray, and a missing comma before a vector (`off <1, 1>`) is not.
     let full = p.full_operators;
-    with_operators(p, full, false, |p| {
+    let no_gt = at_unclosed(p) && p.no_gt;
+    with_operators(p, full, no_gt, |p| {
         delimited(p, R_PAREN, |p| {
             while !p.at_end() {
                 match p.current() {
@@ -218,6 +219,9 @@ pub(super) fn arg_list(p: &mut Parser<'_>) {
                     HASH => directives::directive(p),
                     _ => {
                         if !opt_value(p) {
+                            if p.lenient_end {
+                                break;
+                            }
                             let found = p.describe_current();
                             p.err_and_bump_run(
                                 &format!("expected an argument, found {found}"),
@@ -268,14 +272,19 @@ fn vector(p: &mut Parser<'_>) -> CompletedMarker {
 /// `(expression)`, or a comma list as in `#range (1, 5)`.
 fn paren(p: &mut Parser<'_>) -> CompletedMarker {
     let m = p.start();
-    with_operators(p, true, false, |p| {
+    // In a parenthesis that is never closed, `>` still closes an enclosing vector:
+    // the `)` was probably meant to stand before it.
+    let no_gt = at_unclosed(p) && p.no_gt;
+    with_operators(p, true, no_gt, |p| {
         delimited(p, R_PAREN, |p| {
             loop {
                 while p.at(HASH) {
                     directives::directive(p);
                 }
                 if opt_expr(p).is_none() {
-                    p.error_expected("an expression");
+                    if !p.lenient_end {
+                        p.error_expected("an expression");
+                    }
                     break;
                 }
                 if !p.eat(COMMA) {

@@ -115,9 +115,24 @@ pub(super) fn opt_value(p: &mut Parser<'_>) -> bool {
         DICTIONARY_KW => dictionary(p),
         PATTERN_KW => pattern(p),
         _ if kw.is_keyword() && p.nth(1) == L_BRACE => block(p),
+        _ if block_kind(kw) != BLOCK && !expressions::at_expr_start(p) => {
+            headless_block(p);
+        }
         _ => return expressions::opt_expr(p).is_some(),
     }
     true
+}
+
+// test_err block_without_brace
+// #declare T = texture pigment { Red } };
+/// A value that names a block but lacks its `{`: the keyword alone, with the error.
+fn headless_block(p: &mut Parser<'_>) {
+    let kw = p.current();
+    let m = p.start();
+    p.bump_any();
+    let name = kw.keyword_text().unwrap_or_default();
+    p.error_expected(&format!("'{{' after '{name}'"));
+    m.complete(p, block_kind(kw));
 }
 
 // test blocks
@@ -250,7 +265,8 @@ pub(super) fn param_list(p: &mut Parser<'_>) {
                 COMMA => p.bump_any(),
                 IDENT | OPTIONAL_KW => param(p),
                 // Functions name their parameters x, y, z, u and v, all reserved words.
-                kind if kind.is_keyword() => param(p),
+                X_KW | Y_KW | Z_KW | U_KW | V_KW => param(p),
+                _ if p.lenient_end => break,
                 _ => {
                     let found = p.describe_current();
                     p.err_and_bump_run(
@@ -324,6 +340,9 @@ fn array_initializer(p: &mut Parser<'_>) {
                     COMMA => p.bump_any(),
                     _ => {
                         if !opt_value(p) {
+                            if p.lenient_end {
+                                break;
+                            }
                             let found = p.describe_current();
                             p.err_and_bump_run(
                                 &format!("expected an array element, found {found}"),

@@ -90,6 +90,7 @@ pub fn parse(text: &str) -> Parse {
     let kinds: Vec<SyntaxKind> = significant.iter().map(|t| t.kind).collect();
     let ranges: Vec<TextRange> = significant.iter().map(|t| t.range).collect();
     let structure = structure::analyze(&kinds, &layout(text, &significant));
+    let directive_errors = directive_errors(&kinds, &ranges, &structure);
 
     let mut p = Parser::new(&kinds, &ranges, &structure);
     grammar::source_file(&mut p);
@@ -110,10 +111,50 @@ pub fn parse(text: &str) -> Parse {
             range: e.range,
             message: e.message,
         })
+        .chain(directive_errors)
         .chain(parse_errors)
         .collect();
     errors.sort_by_key(|e| (e.range.start(), e.range.end()));
     Parse { green, errors }
+}
+
+/// Directives that do not pair up: a group without `#end`, an `#else` or `#end` that
+/// belongs to nothing. Reported from the structure rather than by the grammar, so that
+/// they also show inside macro bodies kept as tokens.
+fn directive_errors(
+    kinds: &[SyntaxKind],
+    ranges: &[TextRange],
+    structure: &structure::Structure,
+) -> Vec<SyntaxError> {
+    let directive = |hash: usize| ranges[hash].cover(ranges[hash + 1]);
+    let name = |hash: usize| kinds[hash + 1].keyword_text().unwrap_or("directive");
+    let mut errors = Vec::new();
+    for group in &structure.groups {
+        if group.end.is_none() {
+            let open = group.open as usize;
+            errors.push(SyntaxError {
+                range: directive(open),
+                message: format!("#{} has no matching #end", name(open)),
+            });
+        }
+    }
+    for (hash, mark) in structure.marks.iter().enumerate() {
+        if *mark != Mark::Stray || kinds[hash] != SyntaxKind::HASH {
+            continue;
+        }
+        let message = match kinds[hash + 1] {
+            SyntaxKind::ELSE_KW => "#else without #if or #switch",
+            SyntaxKind::ELSEIF_KW => "#elseif without #if",
+            SyntaxKind::CASE_KW => "#case outside #switch",
+            SyntaxKind::RANGE_KW => "#range outside #switch",
+            _ => "#end without #if, #while, #for, #switch or #macro",
+        };
+        errors.push(SyntaxError {
+            range: directive(hash),
+            message: message.to_string(),
+        });
+    }
+    errors
 }
 
 /// Whether the grammar sees a token: trivia and the lexer's error tokens (already

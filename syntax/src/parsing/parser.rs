@@ -54,6 +54,10 @@ pub(crate) struct Parser<'t> {
     pub(crate) full_operators: bool,
     /// Whether `>` closes a vector here instead of comparing.
     pub(crate) no_gt: bool,
+    /// Whether the current `( )` or `[ ]` is never closed: lists in it end at the first
+    /// token that does not fit, without an error, since the missing closer was probably
+    /// meant to stand there.
+    pub(crate) lenient_end: bool,
     /// Whether a directive was the last thing parsed: the text it stands for is unknown,
     /// so a missing operand or value right after it is not an error.
     pub(crate) after_directive: bool,
@@ -78,6 +82,7 @@ impl<'t> Parser<'t> {
             depth: 0,
             full_operators: false,
             no_gt: false,
+            lenient_end: false,
             after_directive: false,
         }
     }
@@ -114,11 +119,6 @@ impl<'t> Parser<'t> {
     /// The index of the current significant token.
     pub(crate) fn pos(&self) -> usize {
         self.pos
-    }
-
-    /// The kind of the significant token at `index`, regardless of limits.
-    pub(crate) fn kind_at(&self, index: usize) -> SyntaxKind {
-        self.kinds.get(index).copied().unwrap_or(EOF)
     }
 
     pub(crate) fn mark(&self, at: usize) -> Mark {

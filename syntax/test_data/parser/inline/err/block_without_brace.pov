@@ -1,0 +1,1 @@
+#declare T = texture pigment { Red } };
