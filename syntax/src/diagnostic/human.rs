@@ -3,6 +3,7 @@
 
 use super::{Diagnostic, SourceResolver, Span};
 use crate::line_index::{LineIndex, display_width, expand_tabs};
+use std::collections::HashMap;
 use std::fmt::Write;
 
 /// Renders diagnostics one after another, each ending in a newline.
@@ -11,16 +12,27 @@ pub fn render_human(
     sources: &(impl SourceResolver + ?Sized),
 ) -> String {
     let mut out = String::new();
+    // One index per file, not per diagnostic: a file with thousands of errors must not
+    // take quadratic time.
+    let mut indexes = HashMap::new();
     for diagnostic in diagnostics {
         excerpt(
             &mut out,
+            &mut indexes,
             sources,
             &diagnostic.span,
             diagnostic.severity.as_str(),
             &diagnostic.message,
         );
         for related in &diagnostic.related {
-            excerpt(&mut out, sources, &related.span, "note", &related.message);
+            excerpt(
+                &mut out,
+                &mut indexes,
+                sources,
+                &related.span,
+                "note",
+                &related.message,
+            );
         }
         for note in &diagnostic.notes {
             let _ = writeln!(out, "note: {note}");
@@ -31,6 +43,7 @@ pub fn render_human(
 
 fn excerpt(
     out: &mut String,
+    indexes: &mut HashMap<String, LineIndex>,
     sources: &(impl SourceResolver + ?Sized),
     span: &Span,
     label: &str,
@@ -40,7 +53,9 @@ fn excerpt(
         let _ = writeln!(out, "{}: {label}: {message}", span.file);
         return;
     };
-    let index = LineIndex::new(text);
+    let index = indexes
+        .entry(span.file.clone())
+        .or_insert_with(|| LineIndex::new(text));
     let start = index.display_line_col(text, span.range.start());
     let _ = writeln!(
         out,

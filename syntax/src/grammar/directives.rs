@@ -320,6 +320,7 @@ fn value_or_error(p: &mut Parser<'_>) {
 // #fopen F "data.txt" read
 // #read (F, A, B)
 // #write (F, A, ",", B, "\n")
+// #write (F, uint16be <X, Y, Z>, sint8 -1)
 // #fclose F
 fn undef(p: &mut Parser<'_>) {
     let m = p.start();

@@ -9,6 +9,17 @@ use crate::SyntaxKind::{self, *};
 use crate::parsing::{CompletedMarker, DEPTH_LIMIT, Parser, TokenSet};
 
 const PREFIX_POWER: u8 = 13;
+
+const BINARY_FORMATS: TokenSet = TokenSet::new(&[
+    UINT8_KW,
+    SINT8_KW,
+    UINT16BE_KW,
+    UINT16LE_KW,
+    SINT16BE_KW,
+    SINT16LE_KW,
+    SINT32BE_KW,
+    SINT32LE_KW,
+]);
 /// Operand of a colour keyword: everything up to the end of the expression.
 const COLOR_OPERAND_POWER: u8 = 3;
 
@@ -217,6 +228,13 @@ pub(super) fn arg_list(p: &mut Parser<'_>) {
                 match p.current() {
                     COMMA => p.bump_any(),
                     HASH => directives::directive(p),
+                    // The binary formats of `#write`: `uint8 Value`.
+                    kind if BINARY_FORMATS.contains(kind) => {
+                        let m = p.start();
+                        p.bump_any();
+                        expr_or_error(p, "a value to write");
+                        m.complete(p, PROPERTY);
+                    }
                     _ => {
                         if !opt_value(p) {
                             if p.lenient_end {

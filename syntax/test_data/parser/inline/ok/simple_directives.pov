@@ -7,4 +7,5 @@
 #fopen F "data.txt" read
 #read (F, A, B)
 #write (F, A, ",", B, "\n")
+#write (F, uint16be <X, Y, Z>, sint8 -1)
 #fclose F

@@ -1,0 +1,21 @@
+// #declare right-hand sides of every type.
+#declare F = 2.5;
+#declare V = <1, 2, 3>;
+#declare C = color rgbft <1, 0.5, 0, 0.1, 0.2>;
+#declare S = concat("a", str(F, 0, 2));
+#declare O = union { sphere { 0, 1 } box { -1, 1 } }
+#declare T = texture { pigment { C } finish { phong 1 } }
+#declare P = pigment { granite color_map { [0 rgb 0] [1 rgb 1] } }
+#declare N = normal { bumps 0.4 scale 0.2 }
+#declare Fi = finish { ambient 0.1 diffuse 0.6 specular 0.3 }
+#declare I = interior { ior 1.5 caustics 0.3 }
+#declare M = media { scattering { 1, rgb 0.1 } density { spherical } }
+#declare D = density { crackle color_map { [0 rgb 0] [1 rgb 1] } }
+#declare Cam = camera { orthographic location -z look_at 0 }
+#declare L = light_source { <0, 10, 0> color rgb 1 spotlight point_at 0 }
+#declare Tr = transform { rotate 45*y translate x }
+#declare Fn = function(u, v) { u*v }
+#declare Sp = spline { cubic_spline -1, <0, 0, 0>, 0, <1, 1, 0>, 1, <2, 0, 0>, 2, <3, 1, 0> }
+#declare A = array[2][2] { { 1, 2 }, { 3, 4 } };
+#declare Mat = material { texture { T } interior { I } }
+#declare E = Sp(0.5).y + A[1][0] + Fn(1, 2);
