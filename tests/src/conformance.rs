@@ -1,5 +1,6 @@
 //! The conformance suite's programs (`tests/conformance/<group>/<name>.pov`) and the check of
-//! one of them: evaluate it with `analysis::check` and compare what it printed with what
+//! one of them: evaluate it with `analysis::check_with` (the renderer answering `trace`,
+//! `inside` and the extents, as in the CLI) and compare what it printed with what
 //! POV-Ray 3.7 printed, as `tests/conformance/regenerate.sh` recorded it. The README there
 //! describes the expectation files and the comparison rules.
 
@@ -164,7 +165,9 @@ pub fn check(program: &Program) -> Vec<String> {
     let files = program.files();
     let main = program.file_name();
     let options = options();
-    let evaluation = match std::panic::catch_unwind(|| analysis::check(&main, &files, &options)) {
+    let evaluation = match std::panic::catch_unwind(|| {
+        analysis::check_with(&main, &files, &options, &renderer::SceneGeometry)
+    }) {
         Ok(evaluation) => evaluation,
         Err(_) => return vec!["the evaluator panicked".to_owned()],
     };
