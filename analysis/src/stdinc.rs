@@ -86,4 +86,123 @@ mod tests {
         }
         assert!(found > 0, "no #include found: the token pattern is wrong");
     }
+
+    #[test]
+    fn every_file_parses_without_syntax_errors() {
+        for name in names() {
+            let parse = syntax::parse(get(name).unwrap());
+            assert!(parse.errors().is_empty(), "{name}: {:?}", parse.errors());
+        }
+    }
+
+    const EXPECTED_FAILURES_HEADER: &str = "\
+# Probe scenes (analysis/stdinc/probes) whose output differs from POV-Ray's today, one name
+# a line with the first difference. analysis/src/stdinc.rs fails when this list is out of
+# date; regenerate it with UPDATE_EXPECT=1 cargo test -p analysis stdinc
+";
+
+    /// Whether two printed lines agree: the same words, and numbers equal to within 1e-6
+    /// relative. POV-Ray keeps colours in single precision (it prints 0.05 as
+    /// 0.0500000007), which no scene can rely on.
+    fn same_line(want: &str, got: &str) -> bool {
+        let words = |line: &str| -> Vec<String> {
+            line.split(|c: char| c.is_whitespace() || matches!(c, ',' | '<' | '>'))
+                .filter(|word| !word.is_empty())
+                .map(str::to_owned)
+                .collect()
+        };
+        let (want, got) = (words(want), words(got));
+        want.len() == got.len()
+            && want.iter().zip(&got).all(|(a, b)| {
+                a == b
+                    || match (a.parse::<f64>(), b.parse::<f64>()) {
+                        (Ok(x), Ok(y)) => (x - y).abs() <= 1e-6 * x.abs().max(1.0),
+                        _ => false,
+                    }
+            })
+    }
+
+    /// What our evaluator prints for one probe scene against what POV-Ray printed for it,
+    /// as the first difference, or `None` when they agree.
+    fn probe_difference(probe: &std::path::Path) -> Option<String> {
+        let scene = std::fs::read_to_string(probe).unwrap();
+        let expected = std::fs::read_to_string(probe.with_extension("out")).unwrap();
+        let files = crate::MemoryFiles::new().with("probe.pov", scene);
+        let evaluation = crate::check("probe.pov", &files, &crate::EvalOptions::default());
+        let printed: String = evaluation
+            .messages
+            .iter()
+            .map(|m| m.text.as_str())
+            .collect();
+        if let Some(error) = evaluation.diagnostics.iter().find(|d| d.is_error()) {
+            return Some(format!("error: {}", error.message));
+        }
+        let mut expected_lines = expected.lines();
+        let mut printed_lines = printed.lines();
+        for line in 1.. {
+            match (expected_lines.next(), printed_lines.next()) {
+                (None, None) => return None,
+                (Some(want), Some(got)) if same_line(want, got) => continue,
+                (want, got) => {
+                    return Some(format!(
+                        "line {line}: POV-Ray printed {:?}, we printed {:?}",
+                        want.unwrap_or("(nothing)"),
+                        got.unwrap_or("(nothing)")
+                    ));
+                }
+            }
+        }
+        unreachable!("the loop returns at the end of both outputs")
+    }
+
+    /// Every probe scene prints through our evaluator what POV-Ray printed with its own
+    /// include files (the `.out` beside it, recorded by measure.sh). Probes listed in
+    /// `probes/expected_failures.txt` differ today; the list may only shrink.
+    #[test]
+    fn probes_print_what_povray_prints() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("stdinc/probes");
+        let mut probes: Vec<_> = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|entry| entry.unwrap().path())
+            .filter(|path| path.extension().is_some_and(|e| e == "pov"))
+            .collect();
+        probes.sort();
+        assert!(!probes.is_empty());
+        let failing: Vec<(String, String)> = probes
+            .iter()
+            .filter_map(|probe| {
+                let name = probe.file_stem().unwrap().to_string_lossy().into_owned();
+                probe_difference(probe).map(|difference| (name, difference))
+            })
+            .collect();
+        let list_path = dir.join("expected_failures.txt");
+        if std::env::var_os("UPDATE_EXPECT").is_some() {
+            let mut text = EXPECTED_FAILURES_HEADER.to_owned();
+            for (name, difference) in &failing {
+                text.push_str(&format!("{name}  # {difference}\n"));
+            }
+            std::fs::write(&list_path, text).unwrap();
+            return;
+        }
+        let listed: Vec<String> = std::fs::read_to_string(&list_path)
+            .unwrap_or_default()
+            .lines()
+            .filter(|line| !line.trim().is_empty() && !line.starts_with('#'))
+            .map(|line| line.split('#').next().unwrap().trim().to_owned())
+            .collect();
+        let mut problems = Vec::new();
+        for (name, difference) in &failing {
+            if !listed.contains(name) {
+                problems.push(format!("{name} differs from POV-Ray: {difference}"));
+            }
+        }
+        for name in &listed {
+            if !failing.iter().any(|(failed, _)| failed == name) {
+                problems.push(format!(
+                    "{name} now matches POV-Ray: remove it from expected_failures.txt (UPDATE_EXPECT=1)"
+                ));
+            }
+        }
+        assert!(problems.is_empty(), "{}", problems.join("\n"));
+    }
 }
