@@ -25,11 +25,6 @@ impl Sample {
         let d = (self.colour - other.colour).abs();
         d.x + d.y + d.z + (self.transmit - other.transmit).abs()
     }
-
-    /// The colour channels through a transfer curve, for threshold comparisons.
-    pub fn encoded(self, curve: &Curve) -> Sample {
-        Sample::new(curve.encode_vec(self.colour), self.transmit)
-    }
 }
 
 impl Add for Sample {
@@ -107,6 +102,43 @@ impl Curve {
     }
 }
 
+/// A transfer curve's encoding tabulated over 0..=1 and interpolated linearly, for the
+/// millions of values a render encodes (antialiasing comparisons, output pixels); values
+/// outside the table go through the curve itself.
+#[derive(Debug, Clone)]
+pub struct EncodeTable {
+    curve: Curve,
+    table: Vec<f64>,
+}
+
+impl EncodeTable {
+    const STEPS: usize = 8192;
+
+    pub fn new(curve: Curve) -> EncodeTable {
+        let table = match curve {
+            Curve::Identity => Vec::new(),
+            _ => (0..=Self::STEPS)
+                .map(|i| curve.encode(i as f64 / Self::STEPS as f64))
+                .collect(),
+        };
+        EncodeTable { curve, table }
+    }
+
+    pub fn encode(&self, v: f64) -> f64 {
+        if self.table.is_empty() || !(0.0..=1.0).contains(&v) {
+            return self.curve.encode(v);
+        }
+        let x = v * Self::STEPS as f64;
+        let i = (x as usize).min(Self::STEPS - 1);
+        let t = x - i as f64;
+        self.table[i] + (self.table[i + 1] - self.table[i]) * t
+    }
+
+    pub fn encode_vec(&self, v: DVec3) -> DVec3 {
+        DVec3::new(self.encode(v.x), self.encode(v.y), self.encode(v.z))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -120,6 +152,17 @@ mod tests {
         }
         assert_eq!(Curve::Power(2.5).encode(1.0), 1.0);
         assert!((Curve::Power(2.0).encode(0.25) - 0.5).abs() < 1e-12);
+    }
+
+    #[test]
+    fn tabulated_srgb_is_exact_to_16_bits() {
+        let table = EncodeTable::new(Curve::Srgb);
+        for i in 0..=10_000 {
+            let v = i as f64 / 10_000.0;
+            let err = (table.encode(v) - Curve::Srgb.encode(v)).abs();
+            assert!(err < 0.5 / 65535.0, "{v}: {err}");
+        }
+        assert_eq!(table.encode(2.0), Curve::Srgb.encode(2.0));
     }
 
     #[test]

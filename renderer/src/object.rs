@@ -258,10 +258,11 @@ impl Object {
 
     /// The nearest crossing inside the query's interval.
     pub fn nearest<'a>(&'a self, q: &Query, scratch: &mut Vec<Hit<'a>>) -> Option<Hit<'a>> {
-        if !self.bounds().is_finite() {
-            // Unbounded objects skip the box test, which would only say yes.
-        } else {
-            q_clip(self.bounds(), q)?;
+        // A leaf's own test costs about what its box test would; CSG nodes check their box.
+        if let Object::Csg(csg) = self
+            && csg.bounds.is_finite()
+        {
+            q_clip(csg.bounds, q)?;
         }
         match self {
             Object::Leaf(leaf) => {

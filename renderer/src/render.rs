@@ -5,10 +5,10 @@
 
 use crate::build::{BuildError, BuildSettings, build_world};
 use crate::camera::Camera;
-use crate::colour::{Curve, Sample};
+use crate::colour::{Curve, EncodeTable, Sample};
 use crate::image::Image;
 use crate::options::{Extent, Gamma, RenderOptions};
-use crate::sampling::{self, CompareCurve, Sampler, Subdivider};
+use crate::sampling::{self, CompareCurve, Compared, Sampler, Subdivider};
 use crate::tracer::Tracer;
 use analysis::scene::Scene;
 use glam::DVec3;
@@ -43,7 +43,7 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Image, BuildErro
         jitter: options.jitter_amount().max(0.0),
         compare: CompareCurve {
             working,
-            aa: Curve::Power(options.aa_gamma.unwrap_or(2.5)),
+            aa: EncodeTable::new(Curve::Power(options.aa_gamma.unwrap_or(2.5))),
         },
     };
     let samples = if !options.antialias {
@@ -59,7 +59,7 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Image, BuildErro
         // handling off for them and writes working values as they are.
         legacy: scene.settings.assumed_gamma.is_none(),
         working,
-        file: Curve::from_gamma(options.file_gamma.unwrap_or(Gamma::Srgb)),
+        file: output_curve(Curve::from_gamma(options.file_gamma.unwrap_or(Gamma::Srgb))),
         alpha: options.output_alpha,
     };
     let mut image = Image::new(width, height, options.output_alpha);
@@ -156,11 +156,11 @@ fn method1(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
 
 fn method2(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
     let corner_rows = (region.y1 - region.y0 + 2) as usize;
-    let corners: Vec<Vec<Sample>> = map_rows(corner_rows, |row| {
+    let corners: Vec<Vec<Compared>> = map_rows(corner_rows, |row| {
         let mut tracer = Tracer::new(sampler.world);
         let y = f64::from(region.y0) + row as f64;
         (region.x0..=region.x1 + 1)
-            .map(|x| sampler.trace(&mut tracer, f64::from(x), y))
+            .map(|x| sampler.compared(sampler.trace(&mut tracer, f64::from(x), y)))
             .collect()
     });
     map_rows(corner_rows - 1, |row| {
@@ -182,11 +182,25 @@ fn method2(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
     })
 }
 
+/// The file's transfer curve: tabulated for sRGB, whose linear toe the table follows to
+/// 16-bit precision; exact for power curves, whose slope at black a table cannot follow.
+fn output_curve(curve: Curve) -> FileCurve {
+    match curve {
+        Curve::Srgb => FileCurve::Table(EncodeTable::new(curve)),
+        other => FileCurve::Exact(other),
+    }
+}
+
+enum FileCurve {
+    Table(EncodeTable),
+    Exact(Curve),
+}
+
 /// The conversion of averaged samples to output values.
 struct Output {
     legacy: bool,
     working: Curve,
-    file: Curve,
+    file: FileCurve,
     alpha: bool,
 }
 
@@ -212,7 +226,10 @@ impl Output {
                 self.working.decode(clipped.y),
                 self.working.decode(clipped.z),
             );
-            self.file.encode_vec(linear)
+            match &self.file {
+                FileCurve::Table(t) => t.encode_vec(linear),
+                FileCurve::Exact(c) => c.encode_vec(linear),
+            }
         };
         let finite = |v: f64| if v.is_finite() { v as f32 } else { 0.0 };
         [

@@ -6,7 +6,7 @@
 //! neighbour. Colours are compared after the antialiasing gamma curve, as POV-Ray does.
 
 use crate::camera::Camera;
-use crate::colour::{Curve, Sample};
+use crate::colour::{Curve, EncodeTable, Sample};
 use crate::tracer::{Tracer, World};
 
 /// Everything needed to turn image positions into samples.
@@ -23,24 +23,22 @@ pub struct Sampler<'a> {
 }
 
 /// How sample colours are prepared for the threshold test: from working space to linear
-/// light (`assumed_gamma`), then through the antialiasing gamma.
-#[derive(Debug, Clone, Copy)]
+/// light (`assumed_gamma`), then through the antialiasing gamma (tabulated: the test needs
+/// no more than three decimals).
+#[derive(Debug, Clone)]
 pub struct CompareCurve {
     pub working: Curve,
-    pub aa: Curve,
+    pub aa: EncodeTable,
 }
 
 impl CompareCurve {
-    fn apply(&self, s: Sample) -> Sample {
-        let linear = Sample::new(
-            glam::DVec3::new(
-                self.working.decode(s.colour.x),
-                self.working.decode(s.colour.y),
-                self.working.decode(s.colour.z),
-            ),
-            s.transmit,
+    pub fn apply(&self, s: Sample) -> Sample {
+        let linear = glam::DVec3::new(
+            self.working.decode(s.colour.x),
+            self.working.decode(s.colour.y),
+            self.working.decode(s.colour.z),
         );
-        linear.encoded(&self.aa)
+        Sample::new(self.aa.encode_vec(linear), s.transmit)
     }
 }
 
@@ -56,6 +54,14 @@ impl Sampler<'_> {
 
     fn differ(&self, a: Sample, b: Sample) -> bool {
         self.compare.apply(a).distance(self.compare.apply(b)) >= self.threshold
+    }
+
+    /// A sample with its colour as the threshold test compares it.
+    pub fn compared(&self, s: Sample) -> Compared {
+        Compared {
+            sample: s,
+            encoded: self.compare.apply(s),
+        }
     }
 
     /// A pseudo-random offset in [-0.5, 0.5)² for a sample position, the same whatever
@@ -79,6 +85,13 @@ impl Sampler<'_> {
     }
 }
 
+/// A sample and its colour prepared for the threshold test, computed once per sample.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Compared {
+    pub sample: Sample,
+    encoded: Sample,
+}
+
 fn mix(mut z: u64) -> u64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
@@ -89,7 +102,7 @@ fn mix(mut z: u64) -> u64 {
 /// top-right, bottom-left, bottom-right.
 pub struct Subdivider {
     /// Samples of the current pixel on a grid of `side` × `side` points.
-    grid: Vec<Sample>,
+    grid: Vec<Compared>,
     /// The pixel generation that last wrote each grid point, so that the grid is never
     /// cleared.
     stamp: Vec<u32>,
@@ -101,7 +114,7 @@ impl Subdivider {
     pub fn new(depth: u32) -> Subdivider {
         let side = (1usize << depth.saturating_sub(1)) + 1;
         Subdivider {
-            grid: vec![Sample::default(); side * side],
+            grid: vec![Compared::default(); side * side],
             stamp: vec![0; side * side],
             generation: 0,
             side,
@@ -114,7 +127,7 @@ impl Subdivider {
         tracer: &mut Tracer<'_>,
         x: u32,
         y: u32,
-        corners: [Sample; 4],
+        corners: [Compared; 4],
     ) -> Sample {
         self.generation = self.generation.wrapping_add(1);
         if self.generation == 0 {
@@ -139,13 +152,13 @@ impl Subdivider {
         )
     }
 
-    fn set(&mut self, bx: usize, by: usize, s: Sample) {
+    fn set(&mut self, bx: usize, by: usize, s: Compared) {
         let i = by * self.side + bx;
         self.grid[i] = s;
         self.stamp[i] = self.generation;
     }
 
-    fn get(&self, bx: usize, by: usize) -> Sample {
+    fn get(&self, bx: usize, by: usize) -> Compared {
         self.grid[by * self.side + bx]
     }
 
@@ -170,9 +183,11 @@ impl Subdivider {
         ];
         let split = level > 0
             && step >= 2
-            && (0..4).any(|i| (i + 1..4).any(|j| sampler.differ(c[i], c[j])));
+            && (0..4).any(|i| {
+                (i + 1..4).any(|j| c[i].encoded.distance(c[j].encoded) >= sampler.threshold)
+            });
         if !split {
-            return (c[0] + c[1] + c[2] + c[3]) * 0.25;
+            return (c[0].sample + c[1].sample + c[2].sample + c[3].sample) * 0.25;
         }
         let half = step / 2;
         let unit = 1.0 / (self.side - 1) as f64;
@@ -188,7 +203,7 @@ impl Subdivider {
                 let px = pixel.0 + gx as f64 * unit;
                 let py = pixel.1 + gy as f64 * unit;
                 let s = sampler.trace_jittered(tracer, px, py, jitter);
-                self.set(gx, gy, s);
+                self.set(gx, gy, sampler.compared(s));
             }
         }
         let mut sum = Sample::default();

@@ -37,6 +37,12 @@ impl FidelityScene {
     /// Renders the scene (with its directory's files available to `#include`) and decodes
     /// the PNG we would write.
     pub fn render_with(&self, source: &str) -> Result<Picture, String> {
+        let image = self.render_image(source)?;
+        Picture::decode(&renderer::encode_png(&image, &self.render_options()))
+    }
+
+    /// Evaluates and renders `source` as this scene, stopping before PNG encoding.
+    pub fn render_image(&self, source: &str) -> Result<renderer::Image, String> {
         let options = self.render_options();
         let path = workspace_root().join(&self.scene);
         let name = path
@@ -50,7 +56,7 @@ impl FidelityScene {
         }
         let rendered =
             renderer::pipeline::render_source(name, &files, &options).map_err(|f| f.to_human())?;
-        Picture::decode(&renderer::encode_png(&rendered.image, &options))
+        Ok(rendered.image)
     }
 
     pub fn source(&self) -> String {

@@ -32,7 +32,9 @@ pub struct Root {
     pub part: u8,
 }
 
-/// The crossings of one ray with one shape, kept on the stack.
+/// The crossings of one ray with one shape, kept on the stack. Every shape so far crosses
+/// a ray at most four times (a torus); the array stays small because it is built for every
+/// ray and shape.
 #[derive(Debug, Clone)]
 pub struct Roots {
     roots: [Root; Roots::CAPACITY],
@@ -40,7 +42,7 @@ pub struct Roots {
 }
 
 impl Roots {
-    pub const CAPACITY: usize = 16;
+    pub const CAPACITY: usize = 4;
 
     pub fn new() -> Roots {
         Roots {
