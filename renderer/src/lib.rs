@@ -11,6 +11,7 @@ mod image;
 mod light;
 mod material;
 mod noise;
+mod normal;
 mod object;
 mod options;
 mod pattern;

@@ -11,6 +11,7 @@ use std::sync::Arc;
 #[derive(Debug, Clone)]
 pub struct Material {
     pub pigment: Pigment,
+    pub normal: Option<scene::Normal>,
     pub finish: Arc<Finish>,
     /// Whether any point of the pigment lets light through, so that shadow rays must look
     /// at the colour.
@@ -70,13 +71,14 @@ impl Material {
                 normal,
                 finish,
             } => {
-                if normal.is_some() {
-                    return Err("not supported yet: normal patterns".into());
+                if let Some(n) = normal {
+                    crate::normal::check(n)?;
                 }
                 let pigment = pigment_from_scene(pigment)?;
                 Ok(Material {
                     transmits: pigment.may_transmit(),
                     pigment,
+                    normal: normal.clone(),
                     finish: finish.clone(),
                 })
             }

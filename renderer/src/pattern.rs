@@ -59,7 +59,12 @@ pub fn check(pattern: &Pattern) -> Result<(), String> {
 
 /// The pattern's value at a world point.
 pub fn evaluate(pattern: &Pattern, world: DVec3) -> PatternValue {
-    let mut p = pattern.transform.inverse.transform_point3(world);
+    evaluate_local(pattern, pattern.transform.inverse.transform_point3(world))
+}
+
+/// The pattern's value at a point already in pattern space (before warps).
+pub fn evaluate_local(pattern: &Pattern, local: DVec3) -> PatternValue {
+    let mut p = local;
     for warp in pattern.warps.iter().rev() {
         p = apply_warp(warp, p);
     }

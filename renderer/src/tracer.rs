@@ -19,6 +19,8 @@ pub struct Quality {
     pub lighting: bool,
     pub shadows: bool,
     pub area_lights: bool,
+    /// Normal perturbation, with the texture patterns.
+    pub normals: bool,
     /// Reflected, refracted and transmitted rays.
     pub secondary_rays: bool,
 }
@@ -29,6 +31,7 @@ impl Quality {
             lighting: level >= 2,
             shadows: level >= 4,
             area_lights: level >= 5,
+            normals: level >= 6,
             secondary_rays: level >= 8,
         }
     }
@@ -113,6 +116,11 @@ impl<'w> Tracer<'w> {
         let finish = &*material.finish;
         if !world.quality.lighting {
             return Sample::new(pigment.rgb, 0.0);
+        }
+        if let Some(bumps) = &material.normal
+            && world.quality.normals
+        {
+            normal = crate::normal::perturb(bumps, p, normal);
         }
         let opacity = if world.legacy_opacity {
             1.0 - (pigment.filter * pigment.rgb.max_element() + pigment.transmit)
