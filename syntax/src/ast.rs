@@ -174,6 +174,18 @@ impl Declare {
         child(&self.0)
     }
 
+    /// The names a tuple assignment declares: `#declare (A, B) = ...` (POV-Ray 3.8).
+    pub fn tuple_names(&self) -> impl Iterator<Item = Name> + use<> {
+        self.0
+            .children()
+            .filter(|n| n.kind() == TARGET_LIST)
+            .flat_map(|list| {
+                list.descendants()
+                    .filter_map(Name::cast)
+                    .collect::<Vec<_>>()
+            })
+    }
+
     /// The target when it is an element: `Arr[1]`, `D.key`.
     pub fn element_target(&self) -> Option<SyntaxNode> {
         self.0
@@ -539,6 +551,7 @@ mod tests {
         );
         assert_eq!(declares[0].value().map(|v| v.kind()), Some(LITERAL));
         assert!(declares[1].is_local() && declares[1].name().is_none());
+        assert_eq!(declares[1].tuple_names().count(), 0);
         assert_eq!(
             declares[1]
                 .element_target()
@@ -559,6 +572,17 @@ mod tests {
         assert_eq!(call.arg_list().unwrap().args().count(), 2);
         let comments: Vec<_> = file.comments().map(|c| c.content().to_string()).collect();
         assert_eq!(comments, [" a comment"]);
+    }
+
+    #[test]
+    fn tuple_assignment() {
+        let file = parse("#declare (A, , B) = (1, 2, 3);").source_file();
+        let names: Vec<_> = file
+            .declarations()
+            .flat_map(|d| d.tuple_names())
+            .filter_map(|n| n.text())
+            .collect();
+        assert_eq!(names, ["A", "B"]);
     }
 
     #[test]

@@ -633,6 +633,8 @@ define_kinds! {
         ARRAY_DIMENSIONS,
         PARAM_LIST,
         PARAM,
+        /// `(A, B)`: the targets of a tuple assignment.
+        TARGET_LIST,
         /// A defining occurrence of an identifier.
         NAME,
         ARG_LIST,

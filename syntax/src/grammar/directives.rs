@@ -264,14 +264,16 @@ fn boundary_header(p: &mut Parser<'_>) {
 // #declare D.key = "value";
 // #declare deprecated once "use B" Old = 1;
 // #declare X = #if (A) 1 #else 2 #end;
+// declare Legacy = 1;
 // test_err declaration_errors
 // #declare = 1;
 // #declare C 3;
 // #declare E = ;
 /// `#declare Name = value;`, `#local Arr[1] = value;`.
-fn declare(p: &mut Parser<'_>) {
+pub(super) fn declare(p: &mut Parser<'_>) {
     let m = p.start();
-    p.bump(HASH);
+    // Before POV-Ray 3.0 these four had no `#`; 3.7 still accepts that, with a warning.
+    p.eat(HASH);
     p.bump_any();
     if p.eat(DEPRECATED_KW) {
         p.eat(ONCE_KW);
@@ -289,6 +291,7 @@ fn declare(p: &mut Parser<'_>) {
 
 fn declare_target(p: &mut Parser<'_>) {
     match p.current() {
+        L_PAREN => target_list(p),
         IDENT if matches!(p.nth(1), L_BRACK | DOT) => {
             expressions::expr(p);
         }
@@ -298,6 +301,31 @@ fn declare_target(p: &mut Parser<'_>) {
         kind if kind.is_keyword() => name(p),
         _ => p.error_expected("an identifier"),
     }
+}
+
+// test tuple_declarations
+// #declare (A, B, C) = (1, 2, 3);
+// #local (, Second) = Pair();
+/// `(A, B)`: the targets of a tuple assignment (POV-Ray 3.8).
+fn target_list(p: &mut Parser<'_>) {
+    let m = p.start();
+    super::delimited(p, R_PAREN, |p| {
+        while !p.at_end() {
+            match p.current() {
+                COMMA => p.bump_any(),
+                IDENT | L_PAREN => declare_target(p),
+                _ if p.lenient_end => break,
+                _ => {
+                    let found = p.describe_current();
+                    p.err_and_bump_run(
+                        &format!("expected an identifier, found {found}"),
+                        crate::parsing::TokenSet::new(&[COMMA, IDENT]),
+                    );
+                }
+            }
+        }
+    });
+    m.complete(p, TARGET_LIST);
 }
 
 /// A required value, which a directive before it may stand in for.
@@ -336,26 +364,29 @@ fn undef(p: &mut Parser<'_>) {
     m.complete(p, UNDEF);
 }
 
-fn include(p: &mut Parser<'_>) {
+pub(super) fn include(p: &mut Parser<'_>) {
     let m = p.start();
-    p.bump(HASH);
+    // Before POV-Ray 3.0 these four had no `#`; 3.7 still accepts that, with a warning.
+    p.eat(HASH);
     p.bump(INCLUDE_KW);
     expressions::expr_or_error(p, "a file name");
     m.complete(p, INCLUDE);
 }
 
-fn version(p: &mut Parser<'_>) {
+pub(super) fn version(p: &mut Parser<'_>) {
     let m = p.start();
-    p.bump(HASH);
+    // Before POV-Ray 3.0 these four had no `#`; 3.7 still accepts that, with a warning.
+    p.eat(HASH);
     p.bump(VERSION_KW);
     expressions::expr_or_error(p, "a version number");
     p.eat(SEMICOLON);
     m.complete(p, VERSION);
 }
 
-fn default(p: &mut Parser<'_>) {
+pub(super) fn default(p: &mut Parser<'_>) {
     let m = p.start();
-    p.bump(HASH);
+    // Before POV-Ray 3.0 these four had no `#`; 3.7 still accepts that, with a warning.
+    p.eat(HASH);
     p.bump(DEFAULT_KW);
     if p.at(L_BRACE) {
         block_body(p);

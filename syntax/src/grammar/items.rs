@@ -90,6 +90,15 @@ const KEYWORDS: TokenSet = {
 fn keyword_item(p: &mut Parser<'_>) {
     let kw = p.current();
     match kw {
+        // test legacy_directives
+        // declare R = 1;
+        // include "colors.inc"
+        // version 3.1;
+        // default { finish { ambient 0.2 } }
+        DECLARE_KW => directives::declare(p),
+        INCLUDE_KW => directives::include(p),
+        VERSION_KW => directives::version(p),
+        DEFAULT_KW => directives::default(p),
         FUNCTION_KW => function(p),
         PATTERN_KW => pattern(p),
         ARRAY_KW => array(p),

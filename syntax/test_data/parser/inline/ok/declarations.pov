@@ -6,3 +6,4 @@
 #declare D.key = "value";
 #declare deprecated once "use B" Old = 1;
 #declare X = #if (A) 1 #else 2 #end;
+declare Legacy = 1;
