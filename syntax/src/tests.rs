@@ -164,3 +164,34 @@ fn gallery_scenes_parse_without_errors() {
         "expected the nine gallery scenes, found {count}"
     );
 }
+
+/// Inputs that once took quadratic time or could overflow the stack: they parse, keep
+/// every byte, and deep nesting is reported once.
+#[test]
+fn pathological_inputs() {
+    let cases = [
+        (format!("#declare A = {}1;", "1+".repeat(50_000)), 0),
+        (
+            format!(
+                "{}sphere {{ 0, 1 }}{}",
+                "#if (1)\n".repeat(5_000),
+                "#end\n".repeat(5_000)
+            ),
+            1,
+        ),
+        ("#if (1)\n".repeat(5_000), 5_001),
+        (
+            format!("#declare A = {}1{};", "(".repeat(5_000), ")".repeat(5_000)),
+            1,
+        ),
+        (format!("#declare A = {}1;", "-".repeat(5_000)), 1),
+        ("union {\n".repeat(5_000), 5_000),
+        ("}\n".repeat(5_000), 5_000),
+        (format!("#declare A = B{};", "[1]".repeat(5_000)), 1),
+    ];
+    for (text, errors) in cases {
+        let parse = parse(&text);
+        assert_eq!(parse.syntax_node().to_string(), text);
+        assert_eq!(parse.errors().len(), errors, "{}", &text[..40]);
+    }
+}

@@ -6,7 +6,7 @@ use super::items::{opt_value, too_deep};
 use super::vocabulary::{COLOR_COMPONENTS, COLOR_STARTS, COLOR_VECTORS, CONSTANTS, FUNCTIONS};
 use super::{at_unclosed, delimited, directives, with_operators};
 use crate::SyntaxKind::{self, *};
-use crate::parsing::{CompletedMarker, DEPTH_LIMIT, Parser, TokenSet};
+use crate::parsing::{CompletedMarker, DEPTH_LIMIT, Marker, Parser, TokenSet};
 
 const PREFIX_POWER: u8 = 13;
 
@@ -100,6 +100,12 @@ fn expr_bp(p: &mut Parser<'_>, min_power: u8) -> Option<CompletedMarker> {
 
 fn expr_bp_inner(p: &mut Parser<'_>, min_power: u8) -> Option<CompletedMarker> {
     let mut lhs = lhs(p)?;
+    // A chain like `1+1+...+1` nests one node per operator. Past the depth limit the
+    // remaining operands join one node instead, so that the tree (and every recursive
+    // walk or drop of it) stays shallow; at one level the operators' precedence never
+    // rises, so reading that node left to right keeps the meaning.
+    let mut chain = 0u32;
+    let mut flat: Option<Marker> = None;
     loop {
         let op = p.current();
         let Some((left, right)) = infix_power(p, op) else {
@@ -108,18 +114,36 @@ fn expr_bp_inner(p: &mut Parser<'_>, min_power: u8) -> Option<CompletedMarker> {
         if left < min_power {
             break;
         }
-        let m = lhs.precede(p);
-        p.bump_any();
         if op == QUESTION {
+            if let Some(m) = flat.take() {
+                lhs = m.complete(p, BIN_EXPR);
+            }
+            let m = lhs.precede(p);
+            p.bump_any();
             operand(p, 0);
             if p.expect(COLON, "':'") {
                 operand(p, right);
             }
             lhs = m.complete(p, TERNARY_EXPR);
-        } else {
+            continue;
+        }
+        if flat.is_some() {
+            p.bump_any();
             operand(p, right);
+            continue;
+        }
+        let m = lhs.precede(p);
+        p.bump_any();
+        operand(p, right);
+        chain += 1;
+        if chain >= DEPTH_LIMIT {
+            flat = Some(m);
+        } else {
             lhs = m.complete(p, BIN_EXPR);
         }
+    }
+    if let Some(m) = flat {
+        lhs = m.complete(p, BIN_EXPR);
     }
     Some(lhs)
 }
@@ -169,7 +193,11 @@ fn atom(p: &mut Parser<'_>) -> Option<(CompletedMarker, SyntaxKind)> {
 
 /// `.x`, `.red`, `.key` and `[index]` after an operand.
 fn postfix(p: &mut Parser<'_>, mut lhs: CompletedMarker, mut kind: SyntaxKind) -> CompletedMarker {
-    loop {
+    for chain in 0.. {
+        if chain >= DEPTH_LIMIT && matches!(p.current(), DOT | L_BRACK) {
+            p.error_too_deep();
+            return lhs;
+        }
         match p.current() {
             DOT if p.nth(1) == IDENT || p.nth(1).is_keyword() => {
                 let m = lhs.precede(p);
@@ -194,6 +222,7 @@ fn postfix(p: &mut Parser<'_>, mut lhs: CompletedMarker, mut kind: SyntaxKind) -
             _ => return lhs,
         }
     }
+    lhs
 }
 
 /// `Name(arguments)` or `builtin(arguments)`.

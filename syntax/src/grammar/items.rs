@@ -29,10 +29,11 @@ pub(super) fn item_list(p: &mut Parser<'_>) {
     p.depth -= 1;
 }
 
-/// Reports nesting too deep to follow and keeps the rest of the region as tokens.
+/// Reports nesting too deep to follow (once per file) and keeps the rest of the region
+/// as tokens.
 pub(super) fn too_deep(p: &mut Parser<'_>) -> CompletedMarker {
     let m = p.start();
-    p.error_here("nesting too deep");
+    p.error_too_deep();
     p.bump_rest();
     m.complete(p, ERROR_NODE)
 }

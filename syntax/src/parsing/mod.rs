@@ -7,7 +7,7 @@ mod structure;
 mod token_set;
 
 pub use parser::SyntaxError;
-pub(crate) use parser::{CompletedMarker, DEPTH_LIMIT, Parser, describe_kind};
+pub(crate) use parser::{CompletedMarker, DEPTH_LIMIT, Marker, Parser, describe_kind};
 pub(crate) use structure::{Group, GroupKind, Mark, Mode};
 pub(crate) use token_set::TokenSet;
 
@@ -15,7 +15,10 @@ use crate::lexer::{Token, lex};
 use crate::syntax_tree::SyntaxNode;
 use crate::{SyntaxKind, grammar};
 use parser::Event;
-use rowan::{GreenNode, GreenNodeBuilder, TextRange};
+
+type GreenElement = NodeOrToken<GreenNode, GreenToken>;
+use rowan::{GreenNode, GreenToken, NodeOrToken, TextRange};
+use std::collections::HashMap;
 use std::fmt::Write;
 
 /// The result of parsing one file: a tree that holds every byte of it, and the errors.
@@ -208,18 +211,17 @@ fn display_column(prefix: &[u8]) -> u32 {
 
 /// Replays the grammar's events over all tokens. Trivia before a node goes outside it,
 /// so that a comment or blank line belongs to the enclosing node.
-fn build_tree(text: &str, tokens: &[Token], mut events: Vec<Event>) -> GreenNode {
-    let mut builder = GreenNodeBuilder::new();
+fn build_tree<'t>(text: &'t str, tokens: &[Token], mut events: Vec<Event>) -> GreenNode {
+    let mut builder = TreeBuilder::default();
     let mut cursor = 0usize;
-    let mut depth = 0usize;
     let mut forward_kinds = Vec::new();
 
-    let flush_trivia = |builder: &mut GreenNodeBuilder<'_>, cursor: &mut usize| {
+    let flush_trivia = |builder: &mut TreeBuilder<'t>, cursor: &mut usize| {
         while let Some(token) = tokens.get(*cursor) {
             if is_significant(token.kind) {
                 break;
             }
-            builder.token(token.kind.into(), &text[token.range]);
+            builder.token(token.kind, &text[token.range]);
             *cursor += 1;
         }
     };
@@ -247,29 +249,27 @@ fn build_tree(text: &str, tokens: &[Token], mut events: Vec<Event>) -> GreenNode
                     };
                 }
                 for kind in forward_kinds.drain(..).rev() {
-                    if depth > 0 {
+                    if builder.depth() > 0 {
                         flush_trivia(&mut builder, &mut cursor);
                     }
-                    builder.start_node(kind.into());
-                    depth += 1;
+                    builder.start_node(kind);
                 }
             }
             Event::Finish => {
-                if depth == 1 {
+                if builder.depth() == 1 {
                     // The root keeps the trailing whitespace and comments.
                     while cursor < tokens.len() {
                         let token = &tokens[cursor];
-                        builder.token(token.kind.into(), &text[token.range]);
+                        builder.token(token.kind, &text[token.range]);
                         cursor += 1;
                     }
                 }
                 builder.finish_node();
-                depth -= 1;
             }
             Event::Token => {
                 flush_trivia(&mut builder, &mut cursor);
                 if let Some(token) = tokens.get(cursor) {
-                    builder.token(token.kind.into(), &text[token.range]);
+                    builder.token(token.kind, &text[token.range]);
                     cursor += 1;
                 }
             }
@@ -277,4 +277,50 @@ fn build_tree(text: &str, tokens: &[Token], mut events: Vec<Event>) -> GreenNode
         }
     }
     builder.finish()
+}
+
+/// Builds green nodes directly. rowan's own builder deduplicates small nodes by hashing
+/// their whole subtree, which is quadratic in the depth of a chain such as `1+1+...+1`;
+/// only tokens are shared here.
+#[derive(Default)]
+struct TreeBuilder<'t> {
+    parents: Vec<(SyntaxKind, usize)>,
+    children: Vec<GreenElement>,
+    tokens: HashMap<(SyntaxKind, &'t str), GreenToken>,
+}
+
+impl<'t> TreeBuilder<'t> {
+    fn depth(&self) -> usize {
+        self.parents.len()
+    }
+
+    fn start_node(&mut self, kind: SyntaxKind) {
+        self.parents.push((kind, self.children.len()));
+    }
+
+    fn token(&mut self, kind: SyntaxKind, text: &'t str) {
+        let token = self
+            .tokens
+            .entry((kind, text))
+            .or_insert_with(|| GreenToken::new(kind.into(), text))
+            .clone();
+        self.children.push(NodeOrToken::Token(token));
+    }
+
+    fn finish_node(&mut self) {
+        if let Some((kind, first)) = self.parents.pop() {
+            let node = GreenNode::new(kind.into(), self.children.drain(first..));
+            self.children.push(NodeOrToken::Node(node));
+        }
+    }
+
+    fn finish(mut self) -> GreenNode {
+        while !self.parents.is_empty() {
+            self.finish_node();
+        }
+        match self.children.pop() {
+            Some(NodeOrToken::Node(node)) => node,
+            _ => GreenNode::new(SyntaxKind::SOURCE_FILE.into(), std::iter::empty()),
+        }
+    }
 }

@@ -61,6 +61,7 @@ pub(crate) struct Parser<'t> {
     /// Whether a directive was the last thing parsed: the text it stands for is unknown,
     /// so a missing operand or value right after it is not an error.
     pub(crate) after_directive: bool,
+    reported_too_deep: bool,
 }
 
 impl<'t> Parser<'t> {
@@ -84,6 +85,7 @@ impl<'t> Parser<'t> {
             no_gt: false,
             lenient_end: false,
             after_directive: false,
+            reported_too_deep: false,
         }
     }
 
@@ -166,6 +168,15 @@ impl<'t> Parser<'t> {
         }
         let found = self.describe_current();
         self.error_here(format!("expected {what}, found {found}"));
+    }
+
+    /// Reports nesting beyond [`DEPTH_LIMIT`], once: the levels below the first report
+    /// would only repeat it.
+    pub(crate) fn error_too_deep(&mut self) {
+        if !self.reported_too_deep {
+            self.reported_too_deep = true;
+            self.error_here("nesting too deep");
+        }
     }
 
     /// Reports an error at the current token, or just after the previous one at the end.

@@ -344,7 +344,9 @@ impl Pass<'_> {
             for b in 0..branches {
                 let start = group.branch_start(b) as usize + 2;
                 let stop = group.branch_stop(b) as usize;
-                let tokens = self.walk(start, stop, true);
+                // Nested tree groups balance by definition: skipping them keeps this
+                // linear in the size of the branch however deep groups nest.
+                let tokens = self.walk(start, stop, false);
                 let (ok, shift) = self.balance(&tokens);
                 balanced &= ok;
                 if shift != 0 && first_shift.is_none() {
