@@ -289,6 +289,9 @@ pub(super) fn arg_list(p: &mut Parser<'_>) {
 // sphere_sweep { b_spline 2, #while (I < 2) <I, 0, 0>, 1 #local I = I + 1; #end }
 // test_err vector_missing_close
 // sphere { <0, 0, 0, 1 pigment { Red } }
+// sphere { <0, 1,
+//   1 }
+// #declare V = <1, , 2>;
 /// `<a, b, c>`, in which directives may stand between the components.
 fn vector(p: &mut Parser<'_>) -> CompletedMarker {
     let m = p.start();
@@ -303,7 +306,13 @@ fn vector(p: &mut Parser<'_>) -> CompletedMarker {
                 break;
             }
             if opt_expr(p).is_none() {
-                p.error_expected("a vector component");
+                // `<1,,2>`; otherwise the vector ends here and the missing `>` is the
+                // error.
+                if p.at(COMMA) {
+                    p.error_expected("a vector component");
+                    p.bump(COMMA);
+                    continue;
+                }
                 break;
             }
             // Commas between components are optional: `<1 0 0>` is a vector.

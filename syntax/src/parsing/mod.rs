@@ -92,10 +92,11 @@ pub fn parse(text: &str) -> Parse {
         .collect();
     let kinds: Vec<SyntaxKind> = significant.iter().map(|t| t.kind).collect();
     let ranges: Vec<TextRange> = significant.iter().map(|t| t.range).collect();
-    let structure = structure::analyze(&kinds, &layout(text, &significant));
+    let layout = layout(text, &significant);
+    let structure = structure::analyze(&kinds, &layout);
     let directive_errors = directive_errors(&kinds, &ranges, &structure);
 
-    let mut p = Parser::new(&kinds, &ranges, &structure);
+    let mut p = Parser::new(&kinds, &ranges, &layout.first_on_line, &structure);
     grammar::source_file(&mut p);
     if p.ran_away() {
         p.finish_runaway();

@@ -42,6 +42,9 @@ pub struct SyntaxError {
 pub(crate) struct Parser<'t> {
     kinds: &'t [SyntaxKind],
     ranges: &'t [TextRange],
+    /// Whether each token starts its line: a missing token is reported where the
+    /// previous line ends rather than on the next line.
+    first_on_line: &'t [bool],
     pub(crate) structure: &'t Structure,
     pos: usize,
     limit: usize,
@@ -68,11 +71,13 @@ impl<'t> Parser<'t> {
     pub(crate) fn new(
         kinds: &'t [SyntaxKind],
         ranges: &'t [TextRange],
+        first_on_line: &'t [bool],
         structure: &'t Structure,
     ) -> Self {
         Parser {
             kinds,
             ranges,
+            first_on_line,
             structure,
             pos: 0,
             limit: kinds.len(),
@@ -167,7 +172,14 @@ impl<'t> Parser<'t> {
             return;
         }
         let found = self.describe_current();
-        self.error_here(format!("expected {what}, found {found}"));
+        let message = format!("expected {what}, found {found}");
+        let at_line_start =
+            self.pos >= self.limit || self.first_on_line.get(self.pos).copied().unwrap_or(true);
+        if at_line_start && self.pos > 0 {
+            self.error_at(TextRange::empty(self.previous_end()), message);
+        } else {
+            self.error_here(message);
+        }
     }
 
     /// Reports nesting beyond [`DEPTH_LIMIT`], once: the levels below the first report
