@@ -5,12 +5,21 @@
 
 /// Every embedded include file, by the name a scene uses, sorted by name.
 const FILES: &[(&str, &str)] = &[
+    ("arrays.inc", include_str!("../stdinc/arrays.inc")),
     ("colors.inc", include_str!("../stdinc/colors.inc")),
     ("consts.inc", include_str!("../stdinc/consts.inc")),
+    ("debug.inc", include_str!("../stdinc/debug.inc")),
+    ("finish.inc", include_str!("../stdinc/finish.inc")),
     ("functions.inc", include_str!("../stdinc/functions.inc")),
+    ("golds.inc", include_str!("../stdinc/golds.inc")),
     ("math.inc", include_str!("../stdinc/math.inc")),
+    ("metals.inc", include_str!("../stdinc/metals.inc")),
+    ("rad_def.inc", include_str!("../stdinc/rad_def.inc")),
+    ("rand.inc", include_str!("../stdinc/rand.inc")),
     ("shapes.inc", include_str!("../stdinc/shapes.inc")),
     ("shapes_old.inc", include_str!("../stdinc/shapes_old.inc")),
+    ("stdcam.inc", include_str!("../stdinc/stdcam.inc")),
+    ("stdinc.inc", include_str!("../stdinc/stdinc.inc")),
     ("strings.inc", include_str!("../stdinc/strings.inc")),
     ("transforms.inc", include_str!("../stdinc/transforms.inc")),
 ];
