@@ -51,6 +51,7 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Image, BuildErro
     } else {
         match options.aa_method {
             1 => method1(&sampler, &region),
+            3 => method3(&sampler, &region, options.aa_confidence.unwrap_or(0.9)),
             _ => method2(&sampler, &region),
         }
     };
@@ -154,6 +155,43 @@ fn method1(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
     })
 }
 
+fn method3(sampler: &Sampler<'_>, region: &Region, confidence: f64) -> Vec<Vec<Sample>> {
+    let first = centres(sampler, region);
+    let rows = first.len();
+    let cols = region.columns();
+    map_rows(rows, |row| {
+        let mut tracer = Tracer::new(sampler.world);
+        (0..cols)
+            .map(|col| {
+                let mut neighbours = Vec::with_capacity(4);
+                if col > 0 {
+                    neighbours.push(first[row][col - 1]);
+                }
+                if col + 1 < cols {
+                    neighbours.push(first[row][col + 1]);
+                }
+                if row > 0 {
+                    neighbours.push(first[row - 1][col]);
+                }
+                if row + 1 < rows {
+                    neighbours.push(first[row + 1][col]);
+                }
+                let x = region.x0 + col as u32;
+                let y = region.y0 + row as u32;
+                sampling::stochastic_pixel(
+                    sampler,
+                    &mut tracer,
+                    x,
+                    y,
+                    first[row][col],
+                    &neighbours,
+                    confidence,
+                )
+            })
+            .collect()
+    })
+}
+
 fn method2(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
     let corner_rows = (region.y1 - region.y0 + 2) as usize;
     let corners: Vec<Vec<Compared>> = map_rows(corner_rows, |row| {
@@ -238,5 +276,215 @@ impl Output {
             finite(encoded.z),
             finite(alpha),
         ]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use analysis::scene::{self, Colour, Finish, Light, Object, Pigment, Shape, Texture};
+    use std::sync::Arc;
+
+    fn texture(rgb: DVec3) -> Option<Arc<Texture>> {
+        Some(Arc::new(Texture::Plain {
+            pigment: Pigment::Solid(Colour {
+                rgb,
+                filter: 0.0,
+                transmit: 0.0,
+            }),
+            normal: None,
+            finish: Arc::new(Finish::default()),
+        }))
+    }
+
+    fn scene_of(objects: Vec<Object>) -> Scene {
+        Scene {
+            camera: scene::Camera {
+                location: DVec3::new(0.0, 0.0, -60.0),
+                direction: DVec3::Z * 1.5,
+                ..scene::Camera::default()
+            },
+            lights: vec![Light::point(
+                DVec3::new(0.0, 0.0, -100.0),
+                Colour::gray(1.0),
+            )],
+            objects,
+            background: Some(Colour::rgb(0.0, 0.0, 1.0)),
+            fogs: Vec::new(),
+            sky_spheres: Vec::new(),
+            settings: Default::default(),
+            version: Some(3.7),
+        }
+    }
+
+    #[test]
+    fn a_hundred_thousand_objects_render() {
+        // A 100 x 100 x 10 block of small red spheres in front of a blue background.
+        let red = texture(DVec3::new(1.0, 0.0, 0.0));
+        let mut objects = Vec::with_capacity(100_000);
+        for i in 0..100_000 {
+            let (x, y, z) = (i % 100, (i / 100) % 100, i / 10_000);
+            let mut o = Object::new(
+                Shape::Sphere {
+                    center: DVec3::new(f64::from(x) - 49.5, f64::from(y) - 49.5, f64::from(z))
+                        * 0.4,
+                    radius: 0.25,
+                },
+                None,
+            );
+            o.texture = red.clone();
+            objects.push(o);
+        }
+        let options = RenderOptions {
+            width: 40,
+            height: 30,
+            antialias: false,
+            ..RenderOptions::default()
+        };
+        let image = render(&scene_of(objects), &options).unwrap();
+        // The centre sees spheres, the corners see the background past the block.
+        let centre = image.pixel(20, 15);
+        assert!(centre[0] > 0.1 && centre[2] == 0.0, "{centre:?}");
+        let corner = image.pixel(0, 0);
+        assert!(corner[2] > 0.9 && corner[0] == 0.0, "{corner:?}");
+    }
+
+    #[test]
+    fn degenerate_rays_and_shapes_give_no_nan() {
+        // Grazing and coincident surfaces, a sphere at the camera, a huge and a tiny sphere.
+        let objects = vec![
+            Object::new(
+                Shape::Plane {
+                    normal: DVec3::Y,
+                    distance: 0.0,
+                },
+                None,
+            ),
+            Object::new(
+                Shape::Plane {
+                    normal: DVec3::Y,
+                    distance: 0.0,
+                },
+                None,
+            ),
+            Object::new(
+                Shape::Sphere {
+                    center: DVec3::new(0.0, 0.0, -60.0),
+                    radius: 1.0,
+                },
+                None,
+            ),
+            Object::new(
+                Shape::Sphere {
+                    center: DVec3::ZERO,
+                    radius: 1e-12,
+                },
+                None,
+            ),
+            Object::new(
+                Shape::Sphere {
+                    center: DVec3::ZERO,
+                    radius: 1e12,
+                },
+                None,
+            ),
+            Object::new(
+                Shape::Cone {
+                    base: DVec3::ZERO,
+                    base_radius: 0.0,
+                    cap: DVec3::Y,
+                    cap_radius: 0.0,
+                    open: false,
+                },
+                None,
+            ),
+        ];
+        let mut objects = objects;
+        for o in &mut objects {
+            o.texture = texture(DVec3::ONE);
+        }
+        let scene = scene_of(objects);
+        let world = build_world(
+            &scene,
+            BuildSettings {
+                quality: 9,
+                output_alpha: true,
+                max_trace_level: None,
+            },
+        )
+        .unwrap();
+        let camera = Camera::from_scene(&scene.camera).unwrap();
+        let mut tracer = Tracer::new(&world);
+        // Samples before output encoding, which would hide a NaN, over a fine grid that
+        // includes rays grazing the coincident floors.
+        for j in 0..=64 {
+            for i in 0..=64 {
+                let (x, y) = (f64::from(i) / 64.0 * 24.0, f64::from(j) / 64.0 * 18.0);
+                if let Some(ray) = camera.ray(x, y, 24.0, 18.0) {
+                    let s = tracer.trace_primary(&ray);
+                    assert!(
+                        s.colour.is_finite() && s.transmit.is_finite(),
+                        "{x} {y}: {s:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn partial_renders_match_the_full_render_where_they_draw() {
+        let mut sphere = Object::new(
+            Shape::Sphere {
+                center: DVec3::ZERO,
+                radius: 15.0,
+            },
+            None,
+        );
+        sphere.texture = texture(DVec3::new(0.8, 0.5, 0.2));
+        let scene = scene_of(vec![sphere]);
+        let full_options = RenderOptions {
+            width: 32,
+            height: 24,
+            ..RenderOptions::default()
+        };
+        let full = render(&scene, &full_options).unwrap();
+        let mut partial_options = full_options.clone();
+        for option in ["+SR0.5", "+ER20", "+SC5", "+EC0.75"] {
+            partial_options.apply_povray_option(option).unwrap();
+        }
+        let partial = render(&scene, &partial_options).unwrap();
+        for y in 0..24 {
+            for x in 0..32 {
+                let inside = (12..=19).contains(&y) && (4..=24).contains(&x);
+                if inside {
+                    assert_eq!(partial.pixel(x, y), full.pixel(x, y), "{x} {y}");
+                } else {
+                    assert_eq!(partial.pixel(x, y), [0.0, 0.0, 0.0, 1.0], "{x} {y}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn low_quality_shows_pigments_under_full_ambient() {
+        let mut sphere = Object::new(
+            Shape::Sphere {
+                center: DVec3::ZERO,
+                radius: 15.0,
+            },
+            None,
+        );
+        sphere.texture = texture(DVec3::new(0.8, 0.5, 0.2));
+        let scene = scene_of(vec![sphere]);
+        let options = RenderOptions {
+            width: 8,
+            height: 6,
+            antialias: false,
+            quality: 1,
+            ..RenderOptions::default()
+        };
+        let image = render(&scene, &options).unwrap();
+        // Legacy gamma is off in this scene (no assumed_gamma): the pigment as it is.
+        assert_eq!(image.pixel(4, 3), [0.8, 0.5, 0.2, 1.0]);
     }
 }

@@ -1,4 +1,6 @@
-//! Antialiasing: how many camera rays each pixel gets and where. Method 2 is POV-Ray's
+//! Antialiasing: how many camera rays each pixel gets and where. Method 3 samples each
+//! pixel at random until its mean is known to the threshold with `Antialias_Confidence`.
+//! Method 2 is POV-Ray's
 //! adaptive recursive supersampling: every pixel starts from the samples at its four
 //! corners (shared with its neighbours), and a square whose corners differ by the threshold
 //! or more is split into four, up to `depth - 1` times, jittered. Method 1 traces pixel
@@ -244,4 +246,140 @@ pub fn supersample_grid(
 /// Method 1's test: whether a pixel differs from any of its four neighbours.
 pub fn needs_supersampling(sampler: &Sampler<'_>, centre: Sample, neighbours: &[Sample]) -> bool {
     neighbours.iter().any(|n| sampler.differ(centre, *n))
+}
+
+/// Method 3, stochastic supersampling: every pixel takes random samples until the
+/// confidence interval of its mean, estimated from its own samples and its neighbours'
+/// first ones, is within the threshold (summed over red, green, blue and transmittance),
+/// or it has `4^depth` samples. `first` holds each pixel's first sample; `neighbours`
+/// the first samples of the pixels around it.
+pub fn stochastic_pixel(
+    sampler: &Sampler<'_>,
+    tracer: &mut Tracer<'_>,
+    x: u32,
+    y: u32,
+    first: Sample,
+    neighbours: &[Sample],
+    confidence: f64,
+) -> Sample {
+    let max_samples = 1u32 << (2 * sampler.depth.min(9));
+    let z = inverse_normal_cdf((1.0 + confidence.clamp(0.0, 0.999_999)) / 2.0);
+    let mut rng = mix((u64::from(x) << 32) ^ u64::from(y) ^ 0x5bd1_e995);
+    let mut stats = Moments::default();
+    for n in neighbours {
+        stats.add(sampler.compare.apply(*n));
+    }
+    stats.add(sampler.compare.apply(first));
+    let mut sum = first;
+    let mut count = 1u32;
+    while count < max_samples {
+        let n = f64::from(stats.count);
+        if stats.count > 1 {
+            let delta = stats.spread() * (z / n.sqrt());
+            if delta <= sampler.threshold {
+                break;
+            }
+        }
+        rng = mix(rng);
+        let jx = (rng >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+        rng = mix(rng);
+        let jy = (rng >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+        let s = sampler.trace(tracer, f64::from(x) + 0.5 + jx, f64::from(y) + 0.5 + jy);
+        stats.add(sampler.compare.apply(s));
+        sum = sum + s;
+        count += 1;
+    }
+    sum * (1.0 / f64::from(count))
+}
+
+/// Running sums for a sample variance per channel.
+#[derive(Debug, Default)]
+struct Moments {
+    count: u32,
+    sum: [f64; 4],
+    squares: [f64; 4],
+}
+
+impl Moments {
+    fn add(&mut self, s: Sample) {
+        let v = [s.colour.x, s.colour.y, s.colour.z, s.transmit];
+        self.count += 1;
+        for i in 0..4 {
+            self.sum[i] += v[i];
+            self.squares[i] += v[i] * v[i];
+        }
+    }
+
+    /// The summed standard deviations of the four channels.
+    fn spread(&self) -> f64 {
+        let n = f64::from(self.count);
+        (0..4)
+            .map(|i| {
+                ((self.squares[i] - self.sum[i] * self.sum[i] / n) / (n - 1.0))
+                    .max(0.0)
+                    .sqrt()
+            })
+            .sum()
+    }
+}
+
+/// The standard normal quantile (Acklam's rational approximation, relative error below
+/// 1.2e-9), for the confidence factor of method 3.
+fn inverse_normal_cdf(p: f64) -> f64 {
+    const A: [f64; 6] = [
+        -3.969_683_028_665_376e1,
+        2.209_460_984_245_205e2,
+        -2.759_285_104_469_687e2,
+        1.383_577_518_672_69e2,
+        -3.066_479_806_614_716e1,
+        2.506_628_277_459_239,
+    ];
+    const B: [f64; 5] = [
+        -5.447_609_879_822_406e1,
+        1.615_858_368_580_409e2,
+        -1.556_989_798_598_866e2,
+        6.680_131_188_771_972e1,
+        -1.328_068_155_288_572e1,
+    ];
+    const C: [f64; 6] = [
+        -7.784_894_002_430_293e-3,
+        -3.223_964_580_411_365e-1,
+        -2.400_758_277_161_838,
+        -2.549_732_539_343_734,
+        4.374_664_141_464_968,
+        2.938_163_982_698_783,
+    ];
+    const D: [f64; 4] = [
+        7.784_695_709_041_462e-3,
+        3.224_671_290_700_398e-1,
+        2.445_134_137_142_996,
+        3.754_408_661_907_416,
+    ];
+    let p = p.clamp(1e-12, 1.0 - 1e-12);
+    let tail = |q: f64| {
+        (((((C[0] * q + C[1]) * q + C[2]) * q + C[3]) * q + C[4]) * q + C[5])
+            / ((((D[0] * q + D[1]) * q + D[2]) * q + D[3]) * q + 1.0)
+    };
+    if p < 0.02425 {
+        tail((-2.0 * p.ln()).sqrt())
+    } else if p > 1.0 - 0.02425 {
+        -tail((-2.0 * (1.0 - p).ln()).sqrt())
+    } else {
+        let q = p - 0.5;
+        let r = q * q;
+        (((((A[0] * r + A[1]) * r + A[2]) * r + A[3]) * r + A[4]) * r + A[5]) * q
+            / (((((B[0] * r + B[1]) * r + B[2]) * r + B[3]) * r + B[4]) * r + 1.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn normal_quantiles() {
+        assert!((inverse_normal_cdf(0.95) - 1.644_853_6).abs() < 1e-6);
+        assert!((inverse_normal_cdf(0.5)).abs() < 1e-12);
+        assert!((inverse_normal_cdf(0.001) + 3.090_232_3).abs() < 1e-6);
+    }
 }
