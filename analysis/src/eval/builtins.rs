@@ -37,11 +37,13 @@ impl Evaluator<'_> {
             IMAGE_WIDTH_KW => float(f64::from(self.options.image_width)),
             IMAGE_HEIGHT_KW => float(f64::from(self.options.image_height)),
             VERSION_KW => float(self.version),
-            COLOR_KW | COLOUR_KW | RGB_KW | RGBF_KW | RGBT_KW | RGBFT_KW | SRGB_KW | SRGBF_KW
-            | SRGBT_KW | SRGBFT_KW | RED_KW | GREEN_KW | BLUE_KW | FILTER_KW | TRANSMIT_KW => {
-                self.unget(token.clone());
-                Ok(Some(Value::Colour(self.colour()?)))
-            }
+            kind if super::expr::is_colour_keyword(kind) => Err(self.error_at(
+                token,
+                format!(
+                    "expected a numeric expression, found the color keyword '{}'; color keywords may only start an expression",
+                    self.text(token)
+                ),
+            )),
             _ => self.builtin_function(token),
         }
     }
@@ -51,9 +53,9 @@ impl Evaluator<'_> {
         let kind = token.kind;
         let unary: Option<fn(f64) -> f64> = match kind {
             ABS_KW => Some(f64::abs),
-            ACOS_KW => Some(f64::acos),
+            ACOS_KW => Some(|v: f64| v.clamp(-1.0, 1.0).acos()),
             ACOSH_KW => Some(f64::acosh),
-            ASIN_KW => Some(f64::asin),
+            ASIN_KW => Some(|v: f64| v.clamp(-1.0, 1.0).asin()),
             ASINH_KW => Some(f64::asinh),
             ATAN_KW => Some(f64::atan),
             ATANH_KW => Some(f64::atanh),
@@ -63,7 +65,7 @@ impl Evaluator<'_> {
             DEGREES_KW => Some(f64::to_degrees),
             EXP_KW => Some(f64::exp),
             FLOOR_KW => Some(f64::floor),
-            INT_KW => Some(f64::trunc),
+            INT_KW => Some(c_int),
             LN_KW => Some(f64::ln),
             LOG_KW => Some(f64::log10),
             RADIANS_KW => Some(f64::to_radians),
@@ -76,37 +78,48 @@ impl Evaluator<'_> {
         };
         if let Some(f) = unary {
             let args = self.float_args_exactly(token, 1)?;
-            return self.checked(token, f(args[0]));
+            let v = args[0];
+            // POV-Ray stops at these domain errors; the others give NaN or infinity.
+            let refused = match kind {
+                LN_KW if v <= 0.0 => Some("ln"),
+                LOG_KW if v <= 0.0 => Some("log"),
+                SQRT_KW if v < 0.0 => Some("sqrt"),
+                _ => None,
+            };
+            if let Some(name) = refused {
+                return Err(self.error_at(token, format!("{name} of negative number {v:.6}")));
+            }
+            return float(f(v));
         }
         match kind {
             ATAN2_KW => {
                 let a = self.float_args_exactly(token, 2)?;
+                if a[0] == 0.0 && a[1] == 0.0 {
+                    return Err(self.error_at(token, "domain error: atan2(0, 0)"));
+                }
                 float(a[0].atan2(a[1]))
             }
             POW_KW => {
                 let a = self.float_args_exactly(token, 2)?;
-                self.checked(token, a[0].powf(a[1]))
+                if a[0] == 0.0 && a[1] == 0.0 {
+                    return Err(self.error_at(token, "domain error: pow(0, 0)"));
+                }
+                float(a[0].powf(a[1]))
             }
             MOD_KW => {
                 let a = self.float_args_exactly(token, 2)?;
-                if a[1] == 0.0 {
-                    return Err(self.error_at(token, "mod() by zero"));
-                }
                 float(a[0] % a[1])
             }
             DIV_KW => {
                 let a = self.float_args_exactly(token, 2)?;
-                if a[1] == 0.0 {
-                    return Err(self.error_at(token, "div() by zero"));
-                }
-                float((a[0] / a[1]).trunc())
+                float(c_int(a[0] / a[1]))
             }
             MIN_KW | MAX_KW => {
                 let a = self.float_args()?;
-                if a.len() < 2 {
+                if a.is_empty() {
                     return Err(self.error_at(
                         token,
-                        format!("{}() takes at least 2 arguments", self.text(token)),
+                        format!("{}() takes at least 1 argument", self.text(token)),
                     ));
                 }
                 let pick = if kind == MIN_KW { f64::min } else { f64::max };
@@ -218,11 +231,7 @@ impl Evaluator<'_> {
             }
             STRCMP_KW => {
                 let s = self.string_args_exactly(token, 2)?;
-                float(match s[0].cmp(&s[1]) {
-                    std::cmp::Ordering::Less => -1.0,
-                    std::cmp::Ordering::Equal => 0.0,
-                    std::cmp::Ordering::Greater => 1.0,
-                })
+                float(f64::from(strcmp(&s[0], &s[1])))
             }
             VAL_KW => {
                 let s = self.string_args_exactly(token, 1)?;
@@ -417,16 +426,6 @@ impl Evaluator<'_> {
         }
     }
 
-    fn checked(&self, token: &Token, v: f64) -> Result<Option<Value>> {
-        if v.is_nan() {
-            return Err(self.error_at(
-                token,
-                format!("{}() of an argument outside its domain", self.text(token)),
-            ));
-        }
-        Ok(Some(Value::Float(v)))
-    }
-
     fn checked_string(&self, s: String) -> Result<Option<Value>> {
         if s.len() > self.options.budgets.string_bytes {
             return Err(self.budget_error(
@@ -572,6 +571,30 @@ impl Evaluator<'_> {
             _ => Ok(true),
         }
     }
+}
+
+/// C's `strcmp`: the difference of the first differing bytes, a terminating NUL counting
+/// as zero.
+pub fn strcmp(a: &str, b: &str) -> i32 {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    for i in 0..a.len().max(b.len()) {
+        let (x, y) = (
+            a.get(i).copied().unwrap_or(0),
+            b.get(i).copied().unwrap_or(0),
+        );
+        if x != y {
+            return i32::from(x) - i32::from(y);
+        }
+    }
+    0
+}
+
+/// C's `(double)(int)v` on x86: truncation, and INT_MIN for anything out of range or NaN.
+fn c_int(v: f64) -> f64 {
+    if v.is_nan() || v >= 2_147_483_648.0 || v <= -2_147_483_649.0 {
+        return f64::from(i32::MIN);
+    }
+    f64::from(v.trunc() as i32)
 }
 
 fn vec3(v: DVec3) -> Value {

@@ -72,7 +72,7 @@ impl Evaluator<'_> {
         let value = self.additive()?;
         let given = match value {
             Value::Float(v) => Terms::splat(v, len),
-            Value::Vector(t) | Value::Colour(t) => t.promoted(len),
+            Value::Vector(t) | Value::Colour(t) => t.promoted(len.max(t.len)),
             other => {
                 return Err(self.error_at(
                     &at,
@@ -83,6 +83,13 @@ impl Evaluator<'_> {
         let mut c = Terms::splat(0.0, 5);
         for (i, &slot) in slots.iter().enumerate() {
             c.c[slot] = given.c[i];
+        }
+        // Measured against POV-Ray 3.7: `rgb <r, g, b, f>` keeps the extra components in
+        // their natural places (filter, then transmit).
+        if slots.last() == Some(&(slots.len() - 1)) {
+            for i in slots.len()..given.len as usize {
+                c.c[i] = given.c[i];
+            }
         }
         if matches!(keyword, SRGB_KW | SRGBF_KW | SRGBT_KW | SRGBFT_KW) {
             let Some(gamma) = self.settings.assumed_gamma else {

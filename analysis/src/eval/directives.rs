@@ -518,11 +518,8 @@ impl Evaluator<'_> {
                         return Ok(());
                     }
                 }
-                SkipStop::Case | SkipStop::Range | SkipStop::Break => {
-                    return Err(
-                        self.error_at(hash, "#case, #range or #break inside #if without #switch")
-                    );
-                }
+                // These belong to an enclosing #switch or loop; skipping passes them by.
+                SkipStop::Case | SkipStop::Range | SkipStop::Break => {}
             }
         }
     }
@@ -534,7 +531,11 @@ impl Evaluator<'_> {
                 self.skip_block(false, hash)?;
                 Ok(())
             }
-            Some(Cond::Switch { .. }) if !elseif => Ok(()),
+            // Running a taken clause, execution falls through an #else as through a #case.
+            Some(Cond::Switch { taken: true, .. }) if !elseif => Ok(()),
+            Some(Cond::Switch { taken: false, .. }) if !elseif => {
+                Err(self.error_at(hash, "#else in a #switch before any #case or #range"))
+            }
             _ => Err(self.error_at(
                 hash,
                 format!(
@@ -620,33 +621,34 @@ impl Evaluator<'_> {
         self.expect(L_PAREN, "'('")?;
         let value = self.float_in_parens()?;
         self.expect(R_PAREN, "')'")?;
+        // Measured against POV-Ray 3.7: tokens before the first #case run.
         self.conds().push(Cond::Switch {
             value,
             opened_at: hash.start,
+            taken: false,
         });
-        self.next_clause(value, hash)
+        Ok(())
     }
 
-    /// Skips to the next `#case`/`#range` that matches `value`, an `#else`, or the `#end`.
+    /// Skips to the next `#case`/`#range` that matches `value`, an `#else`, or the `#end`,
+    /// and marks the switch taken when a clause is entered.
     fn next_clause(&mut self, value: f64, hash: &Token) -> Result<()> {
         loop {
-            match self.skip_block(true, hash)? {
+            let entered = match self.skip_block(true, hash)? {
                 SkipStop::End => {
                     self.conds().pop();
                     return Ok(());
                 }
-                SkipStop::Else => return Ok(()),
-                SkipStop::Case => {
-                    if self.case_matches(value, false)? {
-                        return Ok(());
-                    }
+                SkipStop::Else => true,
+                SkipStop::Case => self.case_matches(value, false)?,
+                SkipStop::Range => self.case_matches(value, true)?,
+                SkipStop::Break | SkipStop::ElseIf => false,
+            };
+            if entered {
+                if let Some(Cond::Switch { taken, .. }) = self.conds().last_mut() {
+                    *taken = true;
                 }
-                SkipStop::Range => {
-                    if self.case_matches(value, true)? {
-                        return Ok(());
-                    }
-                }
-                SkipStop::Break | SkipStop::ElseIf => {}
+                return Ok(());
             }
         }
     }
@@ -659,7 +661,7 @@ impl Evaluator<'_> {
             let high = self.float_in_parens()?;
             low <= value && value <= high
         } else {
-            (value - low).abs() < EPSILON
+            (value - low).abs() <= EPSILON
         };
         self.expect(R_PAREN, "')'")?;
         Ok(matched)
@@ -668,10 +670,16 @@ impl Evaluator<'_> {
     /// A `#case` or `#range` met while running a clause: its condition decides whether the
     /// clause falls through into it.
     fn case_directive(&mut self, hash: &Token, keyword: &Token) -> Result<()> {
-        let Some(Cond::Switch { value, .. }) = self.conds().last().cloned() else {
+        let Some(Cond::Switch { value, taken, .. }) = self.conds().last().cloned() else {
             return Err(self.error_at(keyword, format!("#{} outside #switch", self.text(keyword))));
         };
-        if self.case_matches(value, keyword.kind == RANGE_KW)? {
+        // A taken clause without #break falls through into the next one, whatever its
+        // condition, as in C (measured against POV-Ray 3.7).
+        let matched = self.case_matches(value, keyword.kind == RANGE_KW)?;
+        if taken || matched {
+            if let Some(Cond::Switch { taken, .. }) = self.conds().last_mut() {
+                *taken = true;
+            }
             return Ok(());
         }
         let opened = hash.clone();

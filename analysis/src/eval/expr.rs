@@ -16,13 +16,54 @@ enum BinOp {
     Sub,
     Mul,
     Div,
+    Lt,
+    Le,
+    Eq,
+    Ne,
+    Ge,
+    Gt,
+    And,
+    Or,
+}
+
+impl BinOp {
+    /// POV-Ray's operators, applied to one component. `=` and `!=` allow EPSILON, and so
+    /// do `<=` and `>=` (as "less or equal"); `<` and `>` are exact; logic treats anything
+    /// within EPSILON of zero as false.
+    fn apply(self, a: f64, b: f64) -> f64 {
+        let equal = (a - b).abs() <= EPSILON;
+        let truth = |t: bool| f64::from(u8::from(t));
+        match self {
+            BinOp::Add => a + b,
+            BinOp::Sub => a - b,
+            BinOp::Mul => a * b,
+            BinOp::Div => a / b,
+            BinOp::Lt => truth(a < b),
+            BinOp::Le => truth(a < b || equal),
+            BinOp::Eq => truth(equal),
+            BinOp::Ne => truth(!equal),
+            BinOp::Ge => truth(a > b || equal),
+            BinOp::Gt => truth(a > b),
+            BinOp::And => truth(is_true(a) && is_true(b)),
+            BinOp::Or => truth(is_true(a) || is_true(b)),
+        }
+    }
+}
+
+/// POV-Ray's truth: anything within EPSILON of zero is false.
+pub fn is_true(v: f64) -> bool {
+    v.abs() > EPSILON
 }
 
 impl Evaluator<'_> {
-    /// An expression outside parentheses: arithmetic only.
+    /// An expression outside parentheses: arithmetic only. Colour keywords may only start
+    /// one (`rgb <1, 0, 0> * 0.5`), where they take the whole expression after them.
     pub fn expression(&mut self) -> Result<Value> {
         let first = self.next()?;
         self.unget(first.clone());
+        if is_colour_keyword(first.kind) {
+            return Ok(Value::colour(self.colour()?));
+        }
         let value = self.additive()?;
         Ok(self.colour_guess(&first, value))
     }
@@ -109,7 +150,7 @@ impl Evaluator<'_> {
         self.unget(first.clone());
         let value = self.full_expression()?;
         self.expect(R_PAREN, "')'")?;
-        Ok(self.to_float(&first, value)? != 0.0)
+        Ok(is_true(self.to_float(&first, value)?))
     }
 
     pub fn to_float(&self, at: &Token, value: Value) -> Result<f64> {
@@ -124,18 +165,15 @@ impl Evaluator<'_> {
     /// POV-Ray decides an expression is a colour from its first token: a colour
     /// identifier or colour keyword makes the whole value a colour.
     fn colour_guess(&self, first: &Token, value: Value) -> Value {
-        let starts_colour = match first.kind {
-            COLOR_KW | COLOUR_KW | RGB_KW | RGBF_KW | RGBT_KW | RGBFT_KW | SRGB_KW | SRGBF_KW
-            | SRGBT_KW | SRGBFT_KW | RED_KW | GREEN_KW | BLUE_KW | FILTER_KW | TRANSMIT_KW => true,
-            IDENT => first
+        let starts_colour = first.kind == IDENT
+            && first
                 .slot
                 .as_ref()
-                .is_some_and(|slot| matches!(&*slot.borrow(), Value::Colour(_))),
-            _ => false,
-        };
+                .is_some_and(|slot| matches!(&*slot.borrow(), Value::Colour(_)));
         match value {
-            Value::Float(v) if starts_colour => Value::Colour(Terms::splat(v, 5)),
-            Value::Vector(t) if starts_colour => Value::Colour(t.promoted(5)),
+            // Measured against POV-Ray 3.7: `#declare F = C.red;` gives <F, 0, 0, 0, 0>.
+            Value::Float(v) if starts_colour => Value::colour(Terms::new(&[v])),
+            Value::Vector(t) if starts_colour => Value::colour(t),
             other => other,
         }
     }
@@ -146,7 +184,7 @@ impl Evaluator<'_> {
         self.unget(first.clone());
         let condition = self.logical()?;
         if self.eat(QUESTION)? {
-            let truth = self.to_float(&first, condition)? != 0.0;
+            let truth = is_true(self.to_float(&first, condition)?);
             let a = self.full_expression()?;
             self.expect(COLON, "':'")?;
             let b = self.full_expression()?;
@@ -156,56 +194,46 @@ impl Evaluator<'_> {
     }
 
     fn logical(&mut self) -> Result<Value> {
-        let first = self.next()?;
-        self.unget(first.clone());
         let mut left = self.relational()?;
         loop {
             let op = self.next()?;
-            if !matches!(op.kind, AMP | PIPE) {
-                self.unget(op);
-                return Ok(left);
-            }
-            let right_first = self.next()?;
-            self.unget(right_first.clone());
+            let bin = match op.kind {
+                AMP => BinOp::And,
+                PIPE => BinOp::Or,
+                _ => {
+                    self.unget(op);
+                    return Ok(left);
+                }
+            };
             let right = self.relational()?;
-            let a = self.to_float(&first, left)? != 0.0;
-            let b = self.to_float(&right_first, right)? != 0.0;
-            left = Value::Float(f64::from(u8::from(if op.kind == AMP {
-                a && b
-            } else {
-                a || b
-            })));
+            left = self.binary(&op, bin, left, right)?;
         }
     }
 
     fn relational(&mut self) -> Result<Value> {
-        let first = self.next()?;
-        self.unget(first.clone());
         let mut left = self.additive()?;
         loop {
             let op = self.next()?;
-            if !matches!(op.kind, LT | LT_EQ | EQ | NEQ | GT_EQ | GT) {
-                self.unget(op);
-                return Ok(left);
-            }
-            let right = self.additive()?;
-            let ordering = match (&left, &right) {
-                (Value::String(a), Value::String(b)) => (a.as_ref().cmp(b.as_ref()) as i8) as f64,
+            let bin = match op.kind {
+                LT => BinOp::Lt,
+                LT_EQ => BinOp::Le,
+                EQ => BinOp::Eq,
+                NEQ => BinOp::Ne,
+                GT_EQ => BinOp::Ge,
+                GT => BinOp::Gt,
                 _ => {
-                    let a = self.to_float(&first, left)?;
-                    let b = self.to_float(&op, right)?;
-                    if (a - b).abs() < EPSILON { 0.0 } else { a - b }
+                    self.unget(op);
+                    return Ok(left);
                 }
             };
-            let result = match op.kind {
-                LT => ordering < 0.0,
-                LT_EQ => ordering <= 0.0,
-                EQ => ordering == 0.0,
-                NEQ => ordering != 0.0,
-                GT_EQ => ordering >= 0.0,
-                _ => ordering > 0.0,
+            let right = self.additive()?;
+            left = match (&left, &right) {
+                // Strings compare as strcmp() does.
+                (Value::String(a), Value::String(b)) => {
+                    Value::Float(bin.apply(f64::from(super::builtins::strcmp(a, b)), 0.0))
+                }
+                _ => self.binary(&op, bin, left, right)?,
             };
-            left = Value::Float(f64::from(u8::from(result)));
         }
     }
 
@@ -308,20 +336,10 @@ impl Evaluator<'_> {
         };
         let mut out = Terms { len, c: [0.0; 5] };
         for i in 0..len as usize {
-            out.c[i] = match bin {
-                BinOp::Add => a.c[i] + b.c[i],
-                BinOp::Sub => a.c[i] - b.c[i],
-                BinOp::Mul => a.c[i] * b.c[i],
-                BinOp::Div => {
-                    if b.c[i] == 0.0 {
-                        return Err(self.error_at(op, "division by zero"));
-                    }
-                    a.c[i] / b.c[i]
-                }
-            };
+            out.c[i] = bin.apply(a.c[i], b.c[i]);
         }
         Ok(match (colour, len) {
-            (true, _) => Value::Colour(out),
+            (true, _) => Value::colour(out),
             (false, 1) => Value::Float(out.c[0]),
             (false, _) => Value::Vector(out),
         })
@@ -382,9 +400,6 @@ impl Evaluator<'_> {
                 return Err(self.error_at(item, format!("unknown dot item '.{}'", self.text(item))));
             }
         };
-        if matches!(item.kind, T_KW) && matches!(value, Value::Colour(_)) {
-            return Ok(Value::Float(terms.c[4]));
-        }
         let len = if matches!(value, Value::Float(_)) {
             1
         } else {
@@ -631,4 +646,26 @@ impl Evaluator<'_> {
             )),
         }
     }
+}
+
+/// The keywords that start a colour: `color`, `rgb` and its kin, and the component names.
+pub fn is_colour_keyword(kind: syntax::SyntaxKind) -> bool {
+    matches!(
+        kind,
+        COLOR_KW
+            | COLOUR_KW
+            | RGB_KW
+            | RGBF_KW
+            | RGBT_KW
+            | RGBFT_KW
+            | SRGB_KW
+            | SRGBF_KW
+            | SRGBT_KW
+            | SRGBFT_KW
+            | RED_KW
+            | GREEN_KW
+            | BLUE_KW
+            | FILTER_KW
+            | TRANSMIT_KW
+    )
 }

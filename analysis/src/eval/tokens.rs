@@ -88,9 +88,13 @@ pub enum Cond {
         body_pos: usize,
         opened_at: u32,
     },
-    /// Inside a `#switch` whose value is `value`, in a taken `#case`/`#range` clause or
-    /// before the first one.
-    Switch { value: f64, opened_at: u32 },
+    /// Inside a `#switch` whose value is `value`: before its first clause, or (`taken`)
+    /// in a clause that matched.
+    Switch {
+        value: f64,
+        opened_at: u32,
+        taken: bool,
+    },
 }
 
 /// A token sequence being read: a file from `pos` to `end`.

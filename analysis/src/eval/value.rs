@@ -110,6 +110,17 @@ pub enum Value {
 }
 
 impl Value {
+    /// A colour value. POV-Ray keeps colours in single precision, and scenes that print
+    /// colour components see it (`rgb 0.1` reads back as 0.100000001490), so we round the
+    /// same way.
+    pub fn colour(terms: Terms) -> Value {
+        let mut c = terms.promoted(5);
+        for v in &mut c.c {
+            *v = f64::from(*v as f32);
+        }
+        Value::Colour(c)
+    }
+
     /// The type's name as POV-Ray users know it, for messages and hover text.
     pub fn type_name(&self) -> &'static str {
         match self {
