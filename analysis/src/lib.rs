@@ -6,6 +6,8 @@ pub mod eval;
 pub mod files;
 pub mod function;
 pub mod geometry;
+pub mod noise;
+pub mod pattern;
 pub mod scene;
 pub mod stdinc;
 

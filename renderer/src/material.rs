@@ -2,7 +2,7 @@
 //! was given, ready to be evaluated at a point. Features not implemented yet are refused when
 //! the material is built, with a message naming them, rather than drawn wrongly.
 
-use crate::pattern::{self, PatternValue};
+use analysis::pattern::{self, PatternValue};
 use analysis::scene::{self, Colour, Finish};
 use glam::DVec3;
 use std::sync::Arc;

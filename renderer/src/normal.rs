@@ -8,8 +8,8 @@
 //! there, and the sum carried back to the world like a normal, as POV-Ray's bump scaling
 //! does: scaling a pattern changes where its bumps are, not how steep they look.
 
-use crate::noise;
-use crate::pattern::{self, PatternValue};
+use analysis::noise;
+use analysis::pattern::{self, PatternValue};
 use analysis::scene::{self, NormalKind, Pattern, PatternKind};
 use glam::DVec3;
 use std::f64::consts::TAU;

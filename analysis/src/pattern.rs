@@ -6,7 +6,7 @@
 //! patterns (checker, hexagon, brick...) name a map entry directly.
 
 use crate::noise;
-use analysis::scene::{Pattern, PatternKind, Turbulence, Warp, WaveType};
+use crate::scene::{Pattern, PatternKind, Turbulence, Warp, WaveType};
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
@@ -228,7 +228,7 @@ fn shape(pattern: &Pattern, raw: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use analysis::scene::Transform;
+    use crate::scene::Transform;
 
     fn value(kind: PatternKind, p: DVec3) -> PatternValue {
         evaluate(&Pattern::new(kind), p)
