@@ -304,9 +304,9 @@ impl Moments {
     fn add(&mut self, s: Sample) {
         let v = [s.colour.x, s.colour.y, s.colour.z, s.transmit];
         self.count += 1;
-        for i in 0..4 {
-            self.sum[i] += v[i];
-            self.squares[i] += v[i] * v[i];
+        for ((sum, square), value) in self.sum.iter_mut().zip(&mut self.squares).zip(v) {
+            *sum += value;
+            *square += value * value;
         }
     }
 
