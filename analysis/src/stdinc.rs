@@ -11,6 +11,8 @@ const FILES: &[(&str, &str)] = &[
     ("debug.inc", include_str!("../stdinc/debug.inc")),
     ("finish.inc", include_str!("../stdinc/finish.inc")),
     ("functions.inc", include_str!("../stdinc/functions.inc")),
+    ("glass.inc", include_str!("../stdinc/glass.inc")),
+    ("glass_old.inc", include_str!("../stdinc/glass_old.inc")),
     ("golds.inc", include_str!("../stdinc/golds.inc")),
     ("math.inc", include_str!("../stdinc/math.inc")),
     ("metals.inc", include_str!("../stdinc/metals.inc")),
@@ -21,6 +23,7 @@ const FILES: &[(&str, &str)] = &[
     ("stdcam.inc", include_str!("../stdinc/stdcam.inc")),
     ("stdinc.inc", include_str!("../stdinc/stdinc.inc")),
     ("strings.inc", include_str!("../stdinc/strings.inc")),
+    ("textures.inc", include_str!("../stdinc/textures.inc")),
     ("transforms.inc", include_str!("../stdinc/transforms.inc")),
 ];
 
