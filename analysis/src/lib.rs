@@ -9,6 +9,7 @@ pub mod geometry;
 pub mod noise;
 pub mod pattern;
 pub mod scene;
+pub mod spline;
 pub mod stdinc;
 
 pub use eval::{Budgets, EvalOptions, Evaluation, Message, Stream, evaluate, evaluate_with};

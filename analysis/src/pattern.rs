@@ -6,7 +6,7 @@
 //! patterns (checker, hexagon, brick...) name a map entry directly.
 
 use crate::noise;
-use crate::scene::{Pattern, PatternKind, Turbulence, Warp, WaveType};
+use crate::scene::{Colour, Pattern, PatternKind, Pigment, Turbulence, Warp, WaveType};
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
@@ -55,6 +55,63 @@ pub fn check(pattern: &Pattern) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// The pattern's value at a world point as one float: a block pattern's entry index, or
+/// the blend value (what `function { pattern { } }` returns).
+pub fn value(pattern: &Pattern, world: DVec3) -> f64 {
+    match evaluate(pattern, world) {
+        PatternValue::Blend(v) => v,
+        PatternValue::Block(i) => i as f64,
+    }
+}
+
+/// Where `v` falls in a map whose entry values ascend: the two entries to blend and the
+/// weight of the second. Below the first entry and above the last, the end entry alone.
+pub fn blend_position(
+    values: impl ExactSizeIterator<Item = f64> + Clone,
+    v: f64,
+) -> (usize, usize, f64) {
+    let n = values.len();
+    let upper = values.clone().take_while(|&at| at <= v).count();
+    if upper == 0 {
+        return (0, 0, 0.0);
+    }
+    if upper == n {
+        return (n - 1, n - 1, 0.0);
+    }
+    let mut pair = values.skip(upper - 1);
+    let a = pair.next().unwrap_or(v);
+    let b = pair.next().unwrap_or(a);
+    let t = if b > a { (v - a) / (b - a) } else { 1.0 };
+    (upper - 1, upper, t)
+}
+
+/// The colour of a scene pigment at a world point, for pigment functions.
+pub fn pigment_colour(pigment: &Pigment, world: DVec3) -> Colour {
+    match pigment {
+        Pigment::Solid(c) => *c,
+        Pigment::Pattern { pattern, map } => {
+            let entries = &map.entries;
+            if entries.is_empty() {
+                return Colour::BLACK;
+            }
+            match evaluate(pattern, world) {
+                PatternValue::Block(i) => {
+                    pigment_colour(&entries[i.min(entries.len() - 1)].1, world)
+                }
+                PatternValue::Blend(v) => {
+                    let (a, b, t) = blend_position(entries.iter().map(|(at, _)| *at), v);
+                    let lower = pigment_colour(&entries[a].1, world);
+                    if a == b {
+                        lower
+                    } else {
+                        lower.lerp(pigment_colour(&entries[b].1, world), t)
+                    }
+                }
+            }
+        }
+    }
 }
 
 /// The pattern's value at a world point.

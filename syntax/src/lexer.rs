@@ -283,6 +283,29 @@ pub fn unescape_string(literal: &str) -> (String, Vec<(TextRange, String)>) {
             'v' => value.push('\u{b}'),
             '0' => value.push('\0'),
             '\\' | '"' | '\'' => value.push(e),
+            'u' => {
+                // \uXXXX: a Unicode code point in four hex digits.
+                let hex: String = chars.clone().take(4).map(|(_, c)| c).collect();
+                match u32::from_str_radix(&hex, 16)
+                    .ok()
+                    .filter(|_| hex.len() == 4)
+                    .and_then(char::from_u32)
+                {
+                    Some(c) => {
+                        value.push(c);
+                        for _ in 0..4 {
+                            chars.next();
+                        }
+                    }
+                    None => {
+                        problems.push((
+                            TextRange::at(offset(i + 1), TextSize::of("\\u")),
+                            "expected four hex digits after \\u".to_owned(),
+                        ));
+                        value.push_str("\\u");
+                    }
+                }
+            }
             other => {
                 let at = offset(i + 1);
                 problems.push((

@@ -18,6 +18,7 @@ pub fn options() -> EvalOptions {
         image_width: 64,
         image_height: 48,
         clock: 0.25,
+        clock_on: true,
         frame_number: 0,
         initial_frame: 0,
         final_frame: 0,

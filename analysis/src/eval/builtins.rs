@@ -26,9 +26,7 @@ impl Evaluator<'_> {
             V_KW => Ok(Some(Value::Vector(Terms::new(&[0.0, 1.0])))),
             CLOCK_KW => float(self.options.clock),
             CLOCK_DELTA_KW => float(0.0),
-            CLOCK_ON_KW => float(f64::from(u8::from(
-                self.options.final_frame > self.options.initial_frame,
-            ))),
+            CLOCK_ON_KW => float(f64::from(u8::from(self.options.clock_on))),
             INITIAL_CLOCK_KW => float(self.options.initial_clock),
             FINAL_CLOCK_KW => float(self.options.final_clock),
             INITIAL_FRAME_KW => float(f64::from(self.options.initial_frame)),
@@ -157,7 +155,7 @@ impl Evaluator<'_> {
             }
             SEED_KW => {
                 let a = self.float_args_exactly(token, 1)?;
-                float(self.rng.seed(a[0]) as f64)
+                float(self.rng.seed(c_int(a[0])) as f64)
             }
             RAND_KW => {
                 let a = self.float_args_exactly(token, 1)?;
@@ -217,8 +215,7 @@ impl Evaluator<'_> {
                 if axis.length() == 0.0 {
                     return Err(self.error_at(token, "vaxis_rotate() about a zero-length axis"));
                 }
-                let rotation =
-                    glam::DQuat::from_axis_angle(axis.normalize(), -degrees.to_radians());
+                let rotation = glam::DQuat::from_axis_angle(axis.normalize(), degrees.to_radians());
                 Ok(Some(vec3(rotation * v)))
             }
             ASC_KW => {
@@ -239,7 +236,9 @@ impl Evaluator<'_> {
             }
             FILE_EXISTS_KW => {
                 let s = self.string_args_exactly(token, 1)?;
-                float(f64::from(u8::from(self.source.read(&s[0]).is_some())))
+                float(f64::from(u8::from(
+                    self.source.read(&s[0]).is_some() || crate::stdinc::get(&s[0]).is_some(),
+                )))
             }
             DEFINED_KW => {
                 self.expect(L_PAREN, "'('")?;
@@ -288,21 +287,17 @@ impl Evaluator<'_> {
                 self.expect(COMMA, "','")?;
                 let precision = self.float_in_parens()?.trunc() as i64;
                 self.expect(R_PAREN, "')'")?;
-                let terms = match value {
-                    Value::Float(v) => Terms::splat(v, n as u8),
-                    Value::Vector(t) | Value::Colour(t) if t.len as usize <= n => {
-                        t.promoted(n as u8)
-                    }
-                    Value::Vector(_) | Value::Colour(_) => {
+                // A float counts as <v, 0, ...>; extra components are dropped and missing
+                // ones are zero (measured against POV-Ray 3.7).
+                let terms = match value.terms() {
+                    Some(t) => Terms {
+                        len: n as u8,
+                        ..t.promoted(5)
+                    },
+                    None => {
                         return Err(self.error_at(
                             &at,
-                            format!("vstr() was told {n} components but the vector has more"),
-                        ));
-                    }
-                    other => {
-                        return Err(self.error_at(
-                            &at,
-                            format!("expected a vector, found {}", other.type_name()),
+                            format!("expected a vector, found {}", value.type_name()),
                         ));
                     }
                 };
@@ -321,19 +316,23 @@ impl Evaluator<'_> {
                 let len = self.float_in_parens()?.trunc() as i64;
                 self.expect(R_PAREN, "')'")?;
                 let chars: Vec<char> = s.chars().collect();
-                if start < 1 || len < 0 || (start + len - 1) as usize > chars.len() {
+                if start + len - 1 > chars.len() as i64 {
                     return Err(self.error_at(
                         token,
                         format!(
-                            "substr() range {start}..{} is outside a string of length {}",
-                            start + len - 1,
+                            "substr() of {len} characters from {start} runs past a string of {}",
                             chars.len()
                         ),
                     ));
                 }
-                let piece: String = chars[(start - 1) as usize..(start - 1 + len) as usize]
-                    .iter()
-                    .collect();
+                // Measured against POV-Ray 3.7: a start before 1 or a length below 1 gives "".
+                let piece: String = if start < 1 || len < 1 {
+                    String::new()
+                } else {
+                    chars[(start - 1) as usize..(start - 1 + len) as usize]
+                        .iter()
+                        .collect()
+                };
                 Ok(Some(Value::String(piece.into())))
             }
             STRUPR_KW | STRLWR_KW => {
@@ -368,9 +367,33 @@ impl Evaluator<'_> {
                     .map_err(|m| self.error_at(token, m))?;
                 Ok(Some(vec3(if kind == MIN_EXTENT_KW { min } else { max })))
             }
-            VTURBULENCE_KW | DATETIME_KW | NOW_KW => {
-                Err(self.unsupported(token, &format!("{}()", self.text(token))))
+            VTURBULENCE_KW => {
+                self.expect(L_PAREN, "'('")?;
+                let lambda = self.float_in_parens()?;
+                self.expect(COMMA, "','")?;
+                let omega = self.float_in_parens()?;
+                self.expect(COMMA, "','")?;
+                let octaves = self.float_in_parens()?.trunc().clamp(1.0, 10.0) as u32;
+                self.expect(COMMA, "','")?;
+                let point = self.vector_in_parens()?;
+                self.expect(R_PAREN, "')'")?;
+                Ok(Some(vec3(crate::noise::turbulence(
+                    point, octaves, omega, lambda,
+                ))))
             }
+            NOW_KW => float(super::datetime::now()),
+            DATETIME_KW => {
+                self.expect(L_PAREN, "'('")?;
+                let days = self.float_in_parens()?;
+                let format = if self.eat(COMMA)? {
+                    self.string_in_parens()?
+                } else {
+                    "%Y-%m-%d %H:%M:%SZ".to_owned()
+                };
+                self.expect(R_PAREN, "')'")?;
+                self.checked_string(super::datetime::format(days, &format))
+            }
+            INPUT_FILE_NAME_KW => Ok(Some(Value::String(self.files[0].name.as_str().into()))),
             _ => Ok(None),
         }
     }
@@ -519,16 +542,12 @@ impl Evaluator<'_> {
         } else {
             self.expect(COMMA, "','")?;
             let dim = self.float_in_parens()?.trunc() as i64;
+            // POV-Ray answers 0 for a dimension the array does not have.
             if dim < 1 || dim as usize > array.dims.len() {
-                return Err(self.error_at(
-                    token,
-                    format!(
-                        "dimension {dim} does not exist: the array has {}",
-                        array.dims.len()
-                    ),
-                ));
+                0.0
+            } else {
+                array.dims[dim as usize - 1] as f64
             }
-            array.dims[dim as usize - 1] as f64
         };
         self.expect(R_PAREN, "')'")?;
         Ok(Some(Value::Float(result)))
@@ -538,7 +557,8 @@ impl Evaluator<'_> {
     /// element or a dictionary key.
     pub fn defined_item(&mut self, name: &Token) -> Result<bool> {
         if name.kind != IDENT {
-            return Ok(name.kind.is_keyword());
+            // Built-in constants such as pi are not identifiers.
+            return Ok(false);
         }
         let text = self.text(name).to_owned();
         let Some(slot) = self.lookup(&text) else {
@@ -656,7 +676,11 @@ pub fn format_float(v: f64, width: i64, precision: i64) -> String {
     } else {
         format!("{v:width_abs$.precision$}")
     };
-    text.replace("NaN", "nan")
+    // POV-Ray on x86 prints C's NaN, which carries the sign bit: "-nan".
+    if v.is_nan() {
+        return format!("{:>width_abs$}", "-nan");
+    }
+    text
 }
 
 #[cfg(test)]

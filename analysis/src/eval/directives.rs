@@ -159,6 +159,15 @@ impl Evaluator<'_> {
                 }
             }
         }
+        if local
+            && indices.is_empty()
+            && key.is_none()
+            && !self.scopes.last().is_some_and(|s| s.contains_key(&text))
+        {
+            // POV-Ray creates a #local before reading its value, so the value cannot use an
+            // outer identifier of the same name.
+            self.declare_local(&text, Value::Uninitialized);
+        }
         let first = self.next()?;
         self.unget(first.clone());
         let value = self.rvalue()?;
@@ -167,12 +176,35 @@ impl Evaluator<'_> {
             self.assign_element(&name, &text, &indices, value)?;
         } else if let Some(key) = key {
             self.assign_key(&name, &text, key, value)?;
-        } else if local {
-            self.declare_local(&text, value);
         } else {
-            self.declare(&text, value);
+            let existing = if local {
+                self.scopes
+                    .last()
+                    .and_then(|scope| scope.get(&text).cloned())
+            } else {
+                self.lookup(&text)
+            };
+            if let (Some(slot), Value::Function(_)) = (existing, &value)
+                && matches!(&*slot.borrow(), Value::Function(_))
+            {
+                return Err(self.error_at(
+                    &name,
+                    format!(
+                        "function '{text}' is already declared; #undef it before declaring it again"
+                    ),
+                ));
+            }
+            if local {
+                self.declare_local(&text, value);
+            } else {
+                self.declare(&text, value);
+            }
         }
-        if !self.eat(SEMICOLON)? && needs_semicolon && self.version >= 3.5 {
+        // A '#' given back here is a held-back #declare: the ';' is missing, and that
+        // declaration must not run before the error is reported.
+        let semicolon =
+            !matches!(self.pushed.last(), Some(t) if t.kind == HASH) && self.eat(SEMICOLON)?;
+        if !semicolon && needs_semicolon && self.version >= 3.5 {
             return Err(self
                 .error_at(
                     &first,
@@ -368,6 +400,9 @@ impl Evaluator<'_> {
         if at.kind == MIXED_KW {
             mixed = true;
             at = self.guarded(Self::next)?;
+        }
+        if dims.len() > 5 {
+            return Err(self.error_at(&at, "too many array dimensions: POV-Ray allows 5"));
         }
         if dims.is_empty() {
             return Err(self.error_at(&at, "expected '[' with the array's size"));

@@ -562,6 +562,13 @@ impl Evaluator<'_> {
         };
         let value = slot.borrow().clone();
         match value {
+            Value::Uninitialized => Err(self.error_at(
+                &token,
+                format!(
+                    "'{}' has no value yet: a #local is created before its value is read",
+                    self.text(&token)
+                ),
+            )),
             Value::Function(function) if self.peek_kind()? == L_PAREN => {
                 self.call_function(&token, &function)
             }

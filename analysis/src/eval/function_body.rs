@@ -4,9 +4,12 @@
 //! constants) or declared functions (called).
 
 use super::tokens::Token;
+use super::value::Terms;
 use super::value::Value;
 use super::{Evaluator, Result};
-use crate::function::{Function, Internal, MAX_STACK, Op, Unary};
+use crate::function::{Body, Function, Internal, MAX_STACK, Op, Unary};
+use crate::scene::Pigment;
+use crate::spline::Spline;
 use std::sync::Arc;
 use syntax::SyntaxKind::*;
 
@@ -45,18 +48,15 @@ impl Evaluator<'_> {
         if first.kind == INTERNAL_KW {
             return self.internal_function(&first);
         }
-        if matches!(
-            first.kind,
-            PATTERN_KW | PIGMENT_KW | SPLINE_KW | TRANSFORM_KW
-        ) {
-            return Err(self.unsupported(&first, &format!("function {{ {} }}", self.text(&first))));
+        if let Some(body) = self.special_function_body(&first)? {
+            self.expect(R_BRACE, "'}' to close the function")?;
+            return Ok(Function { params, body });
         }
-        self.unget(first);
         let mut code = Vec::new();
         self.fn_or(&params, &mut code)?;
         self.expect(R_BRACE, "'}' to close the function")?;
         match Function::stack_depth(&code) {
-            Some(depth) if depth <= MAX_STACK => Ok(Function { params, code }),
+            Some(depth) if depth <= MAX_STACK => Ok(Function::code(params, code)),
             _ => Err(self.error_at(
                 &keyword,
                 format!("this function nests deeper than {MAX_STACK} levels"),
@@ -84,7 +84,7 @@ impl Evaluator<'_> {
         params.extend((0..info.extra_params).map(|i| format!("P{i}")));
         let mut code: Vec<Op> = (0..count).map(Op::Param).collect();
         code.push(Op::Internal(Internal(info.number), count));
-        Ok(Function { params, code })
+        Ok(Function::code(params, code))
     }
 
     /// `F(a, b, ...)` at parse time.
@@ -101,7 +101,50 @@ impl Evaluator<'_> {
                 ),
             ));
         }
-        Ok(Value::Float(function.eval(&args)))
+        Ok(match function.result_len() {
+            1 => Value::Float(function.eval(&args)),
+            5 => Value::colour(Terms::new(&function.eval_vector(&args))),
+            len => Value::Vector(Terms::new(&function.eval_vector(&args)[..usize::from(len)])),
+        })
+    }
+
+    /// The body of a function made from a pattern, pigment, spline or transform, whose first
+    /// token is `first`; `None` for an ordinary float expression.
+    fn special_function_body(&mut self, first: &Token) -> Result<Option<Body>> {
+        let body = match first.kind {
+            PATTERN_KW => match self.pigment_body()? {
+                Pigment::Pattern { pattern, .. } => Body::Pattern(pattern),
+                Pigment::Solid(_) => {
+                    return Err(
+                        self.error_at(first, "expected a pattern in function { pattern { } }")
+                    );
+                }
+            },
+            PIGMENT_KW => Body::Pigment(Box::new(self.pigment_body()?)),
+            SPLINE_KW => Body::Spline(Arc::new(self.spline_body()?)),
+            TRANSFORM_KW => {
+                let t = self.transformation(first)?;
+                Body::Transform(t)
+            }
+            IDENT => match first.slot.as_ref().map(|s| s.borrow().clone()) {
+                Some(Value::Spline(spline)) if self.peek_kind()? == R_BRACE => {
+                    Body::Spline(Arc::new(Spline::clone(&spline)))
+                }
+                Some(Value::Transform(t)) if self.peek_kind()? == R_BRACE => Body::Transform(*t),
+                Some(Value::Pigment(p)) if self.peek_kind()? == R_BRACE => {
+                    Body::Pigment(Box::new(Pigment::clone(&p)))
+                }
+                _ => {
+                    self.unget(first.clone());
+                    return Ok(None);
+                }
+            },
+            _ => {
+                self.unget(first.clone());
+                return Ok(None);
+            }
+        };
+        Ok(Some(body))
     }
 
     fn fn_or(&mut self, params: &[String], code: &mut Vec<Op>) -> Result<()> {
@@ -186,8 +229,10 @@ impl Evaluator<'_> {
             }
             PLUS => self.fn_unary(params, code)?,
             BANG => {
-                self.fn_unary(params, code)?;
-                emit(code, Op::Not);
+                return Err(self.error_at(
+                    &token,
+                    "'!' is not allowed in a function; compare with 0 instead",
+                ));
             }
             _ => {
                 self.unget(token);
@@ -202,6 +247,22 @@ impl Evaluator<'_> {
         let text = self.text(&token).to_owned();
         if let Some(index) = params.iter().position(|p| *p == text) {
             code.push(Op::Param(index as u8));
+            return Ok(());
+        }
+        if matches!(token.kind, X_KW | Y_KW | Z_KW | U_KW | V_KW) {
+            // POV-Ray's x and u name the same first parameter, as do y and v; an axis the
+            // parameter list does not name is 0 (measured against POV-Ray 3.7).
+            let alias = match token.kind {
+                X_KW => "u",
+                U_KW => "x",
+                Y_KW => "v",
+                V_KW => "y",
+                _ => "",
+            };
+            match params.iter().position(|p| p == alias) {
+                Some(index) => code.push(Op::Param(index as u8)),
+                None => code.push(Op::Const(0.0)),
+            }
             return Ok(());
         }
         match token.kind {
@@ -233,7 +294,13 @@ impl Evaluator<'_> {
                                 ),
                             ));
                         }
-                        code.push(Op::Call(Arc::clone(&function), argc as u8));
+                        let part = self.fn_dot_item()?;
+                        match part {
+                            Some(part) => {
+                                code.push(Op::CallPart(Arc::clone(&function), argc as u8, part))
+                            }
+                            None => code.push(Op::Call(Arc::clone(&function), argc as u8)),
+                        }
                     }
                     other => {
                         return Err(self.error_at(
@@ -246,6 +313,64 @@ impl Evaluator<'_> {
             _ => self.fn_builtin(&token, params, code)?,
         }
         Ok(())
+    }
+
+    /// `sum(i, from, to, expr)` or `prod(...)`: `expr` for i = from, from + 1, ... up to `to`.
+    fn fn_sum(&mut self, token: &Token, params: &[String], code: &mut Vec<Op>) -> Result<()> {
+        self.expect(L_PAREN, "'('")?;
+        let var = self.next_raw()?;
+        if var.kind != IDENT {
+            return Err(self.error_at(
+                &var,
+                format!("expected the loop variable, found {}", self.describe(&var)),
+            ));
+        }
+        let mut inner: Vec<String> = params.to_vec();
+        inner.push(self.text(&var).to_owned());
+        self.expect(COMMA, "','")?;
+        self.fn_or(params, code)?;
+        self.expect(COMMA, "','")?;
+        self.fn_or(params, code)?;
+        self.expect(COMMA, "','")?;
+        let mut body = Vec::new();
+        self.fn_or(&inner, &mut body)?;
+        self.expect(R_PAREN, "')'")?;
+        match Function::stack_depth(&body) {
+            Some(depth) if depth <= MAX_STACK => {}
+            _ => {
+                return Err(self.error_at(
+                    token,
+                    format!("this sum nests deeper than {MAX_STACK} levels"),
+                ));
+            }
+        }
+        code.push(Op::Sum {
+            body: body.into(),
+            product: token.kind == PROD_KW,
+        });
+        Ok(())
+    }
+
+    /// A `.x`, `.red`, ... after a call of a vector-valued function: the component index.
+    fn fn_dot_item(&mut self) -> Result<Option<u8>> {
+        if !self.eat(DOT)? {
+            return Ok(None);
+        }
+        let item = self.next()?;
+        let part = match item.kind {
+            X_KW | U_KW | RED_KW => 0,
+            Y_KW | V_KW | GREEN_KW => 1,
+            Z_KW | BLUE_KW => 2,
+            T_KW | FILTER_KW => 3,
+            TRANSMIT_KW => 4,
+            GRAY_KW => 5,
+            _ => {
+                return Err(
+                    self.error_at(&item, format!("unknown dot item '.{}'", self.text(&item)))
+                );
+            }
+        };
+        Ok(Some(part))
     }
 
     /// The arguments of a call inside a function body, compiled; returns their count.
@@ -276,8 +401,6 @@ impl Evaluator<'_> {
         let constant = match token.kind {
             PI_KW => Some(std::f64::consts::PI),
             TAU_KW => Some(std::f64::consts::TAU),
-            TRUE_KW | YES_KW | ON_KW => Some(1.0),
-            FALSE_KW | NO_KW | OFF_KW => Some(0.0),
             CLOCK_KW => Some(self.options.clock),
             IMAGE_WIDTH_KW => Some(f64::from(self.options.image_width)),
             IMAGE_HEIGHT_KW => Some(f64::from(self.options.image_height)),
@@ -313,6 +436,9 @@ impl Evaluator<'_> {
             TANH_KW => Some(Unary::Tanh),
             _ => None,
         };
+        if matches!(token.kind, SUM_KW | PROD_KW) {
+            return self.fn_sum(token, params, code);
+        }
         let name = self.text(token).to_owned();
         let (op, arity): (Op, std::ops::RangeInclusive<usize>) = match (unary, token.kind) {
             (Some(f), _) => (Op::Unary(f), 1..=1),
@@ -378,10 +504,7 @@ fn emit(code: &mut Vec<Op>, op: Op) {
         } else {
             2
         };
-        let piece = Function {
-            params: Vec::new(),
-            code: code[n - arity..].to_vec(),
-        };
+        let piece = Function::code(Vec::new(), code[n - arity..].to_vec());
         let value = piece.eval(&[]);
         code.truncate(n - arity);
         code.push(Op::Const(value));

@@ -8,6 +8,7 @@
 mod builtins;
 mod camera;
 mod colour;
+mod datetime;
 mod directives;
 mod expr;
 mod file_io;
@@ -73,6 +74,8 @@ pub struct EvalOptions {
     pub image_width: u32,
     pub image_height: u32,
     pub clock: f64,
+    /// Whether a clock value was given (`clock_on`).
+    pub clock_on: bool,
     pub frame_number: u32,
     pub initial_frame: u32,
     pub final_frame: u32,
@@ -89,6 +92,7 @@ impl Default for EvalOptions {
             image_width: 800,
             image_height: 600,
             clock: 0.0,
+            clock_on: false,
             frame_number: 0,
             initial_frame: 1,
             final_frame: 1,

@@ -10,9 +10,10 @@ pub struct RandomStreams {
 }
 
 impl RandomStreams {
-    /// Creates a stream and returns its number.
+    /// Creates a stream from a seed already converted to an integer as C's `(int)` would
+    /// (the caller does that), and returns its number.
     pub fn seed(&mut self, seed: f64) -> usize {
-        self.states.push(seed.trunc() as i64 as u32);
+        self.states.push(seed as i32 as u32);
         self.states.len() - 1
     }
 

@@ -10,7 +10,7 @@ use std::collections::BTreeMap;
 use std::rc::Rc;
 
 use super::macros::MacroDef;
-use super::spline::Spline;
+use crate::spline::Spline;
 
 /// Up to five numeric terms: a vector of 2 to 4 components, or a colour's five
 /// (red, green, blue, filter, transmit).
@@ -107,6 +107,8 @@ pub enum Value {
     Macro(Rc<MacroDef>),
     /// A file handle opened by `#fopen`.
     File(Rc<RefCell<super::file_io::OpenFile>>),
+    /// A `#local` whose value is still being read.
+    Uninitialized,
 }
 
 impl Value {
@@ -150,6 +152,7 @@ impl Value {
             Value::Dictionary(_) => "dictionary",
             Value::Macro(_) => "macro",
             Value::File(_) => "file handle",
+            Value::Uninitialized => "identifier without a value yet",
         }
     }
 
