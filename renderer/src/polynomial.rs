@@ -1,7 +1,8 @@
 //! Real roots of polynomials inside an interval, for the shapes whose surfaces are
-//! algebraic (torus, later cubic, quartic and poly). The roots are isolated with a Sturm
-//! sequence, which counts the distinct real roots in any interval, and then refined by
-//! bisection safeguarded regula falsi. Coefficients are given lowest degree first.
+//! algebraic (torus, later cubic, quartic and poly). The roots of the derivative, found
+//! the same way down to a straight line, split the interval into stretches where the
+//! polynomial is monotonic; each stretch whose ends differ in sign holds one root, refined
+//! by bracketed Newton iteration. Coefficients are given lowest degree first.
 
 /// The highest degree POV-Ray's `poly` allows.
 pub const MAX_DEGREE: usize = 15;
@@ -38,6 +39,17 @@ impl Poly {
         }
     }
 
+    /// The value and the slope at `x`, by one Horner pass.
+    fn eval_with_derivative(&self, x: f64) -> (f64, f64) {
+        let mut value = 0.0;
+        let mut slope = 0.0;
+        for c in self.coeffs().iter().rev() {
+            slope = slope * x + value;
+            value = value * x + c;
+        }
+        (value, slope)
+    }
+
     fn derivative(&self) -> Poly {
         let mut d = Poly::ZERO;
         for i in 1..self.len {
@@ -45,26 +57,6 @@ impl Poly {
         }
         d.len = self.len.saturating_sub(1);
         d
-    }
-
-    /// The negated remainder of `self / b`, the next member of a Sturm chain.
-    fn negated_remainder(&self, b: &Poly) -> Poly {
-        let mut r = *self;
-        let lead = b.c[b.len - 1];
-        while r.len >= b.len {
-            let factor = r.c[r.len - 1] / lead;
-            let shift = r.len - b.len;
-            for i in 0..b.len {
-                r.c[shift + i] -= factor * b.c[i];
-            }
-            r.len -= 1;
-        }
-        // Coefficients that are rounding noise relative to the dividend are zero.
-        r.trim(1e-14 * self.scale());
-        for c in &mut r.c[..r.len] {
-            *c = -*c;
-        }
-        r
     }
 }
 
@@ -92,75 +84,71 @@ pub fn roots_in(coeffs: &[f64], lo: f64, hi: f64, out: &mut Vec<f64>) {
     // A ray grazing a surface can leave a negligible leading coefficient and with it a
     // huge spurious root.
     p.trim(1e-14);
-    if p.len < 2 {
-        return;
-    }
-    let mut chain = [Poly::ZERO; MAX_DEGREE + 1];
-    chain[0] = p;
-    chain[1] = p.derivative();
-    let mut n = 2;
-    while n < chain.len() && chain[n - 1].len > 1 {
-        let r = chain[n - 2].negated_remainder(&chain[n - 1]);
-        if r.len == 0 {
-            break;
-        }
-        chain[n] = r;
-        n += 1;
-    }
-    let chain = &chain[..n];
-    let count = |x: f64| sign_changes(chain, x);
-    isolate(&p, &count, lo, hi, count(lo), count(hi), 0, out);
+    let mut roots = [0.0; MAX_DEGREE];
+    let n = roots_of(&p, lo, hi, 1e-13, &mut roots);
+    out.extend_from_slice(&roots[..n]);
 }
 
-fn sign_changes(chain: &[Poly], x: f64) -> usize {
-    let mut changes = 0;
-    let mut last = 0.0;
-    for q in chain {
-        let v = q.eval(x);
-        if v != 0.0 {
-            if last != 0.0 && (v < 0.0) != (last < 0.0) {
-                changes += 1;
+/// The roots of `p` in `[lo, hi]`, ascending, written to `out`; returns how many. Between
+/// consecutive roots of the derivative (found the same way) `p` is monotonic, so each
+/// such stretch holds at most one root, bracketed by a change of sign.
+///
+/// A coarse critical point can land a hair past a double root; the stretch then shows no
+/// change of sign and that tangent root is lost, which is what a ray grazing a surface
+/// should see anyway.
+fn roots_of(p: &Poly, lo: f64, hi: f64, precision: f64, out: &mut [f64; MAX_DEGREE]) -> usize {
+    match p.len {
+        0 | 1 => 0,
+        2 => {
+            let t = -p.c[0] / p.c[1];
+            if (lo..=hi).contains(&t) {
+                out[0] = t;
+                1
+            } else {
+                0
             }
-            last = v;
+        }
+        _ => {
+            let mut critical = [0.0; MAX_DEGREE];
+            let mut dp = p.derivative();
+            dp.trim(0.0);
+            // The derivative's roots only split the interval: a coarse position will do.
+            let m = roots_of(&dp, lo, hi, 1e-7, &mut critical);
+            let mut n = 0;
+            let mut a = lo;
+            let mut fa = p.eval(a);
+            for &b in critical[..m].iter().chain(std::iter::once(&hi)) {
+                let fb = p.eval(b);
+                if fa == 0.0 {
+                    if n == 0 || out[n - 1] != a {
+                        out[n] = a;
+                        n += 1;
+                    }
+                } else if (fa < 0.0) != (fb < 0.0)
+                    && fb != 0.0
+                    && let Some(root) = refine(p, a, b, precision)
+                {
+                    out[n] = root;
+                    n += 1;
+                }
+                a = b;
+                fa = fb;
+            }
+            if fa == 0.0 && (n == 0 || out[n - 1] != a) {
+                out[n] = a;
+                n += 1;
+            }
+            n
         }
     }
-    changes
 }
 
-#[allow(clippy::too_many_arguments)]
-fn isolate(
-    p: &Poly,
-    count: &dyn Fn(f64) -> usize,
-    lo: f64,
-    hi: f64,
-    c_lo: usize,
-    c_hi: usize,
-    depth: u32,
-    out: &mut Vec<f64>,
-) {
-    let n = c_lo.saturating_sub(c_hi);
-    if n == 0 {
-        return;
-    }
-    if n == 1 || depth > 60 || hi - lo <= 1e-15 * (lo.abs() + hi.abs()) {
-        if let Some(root) = refine(p, lo, hi) {
-            out.push(root);
-        } else if n > 1 || depth > 60 {
-            // A cluster of roots too close to tell apart: one crossing stands for them.
-            out.push(0.5 * (lo + hi));
-        }
-        return;
-    }
-    let mid = 0.5 * (lo + hi);
-    let c_mid = count(mid);
-    isolate(p, count, lo, mid, c_lo, c_mid, depth + 1, out);
-    isolate(p, count, mid, hi, c_mid, c_hi, depth + 1, out);
-}
-
-/// The root of `p` in `[lo, hi]` when `p` changes sign there.
-fn refine(p: &Poly, mut lo: f64, mut hi: f64) -> Option<f64> {
-    let mut f_lo = p.eval(lo);
-    let mut f_hi = p.eval(hi);
+/// The root of `p` in `[lo, hi]` when `p` changes sign there, to a relative `precision`:
+/// Newton's method kept inside the shrinking bracket, bisecting whenever a step would
+/// leave it or converge too slowly.
+fn refine(p: &Poly, mut lo: f64, mut hi: f64, precision: f64) -> Option<f64> {
+    let f_lo = p.eval(lo);
+    let f_hi = p.eval(hi);
     if f_lo == 0.0 {
         return Some(lo);
     }
@@ -170,35 +158,41 @@ fn refine(p: &Poly, mut lo: f64, mut hi: f64) -> Option<f64> {
     if (f_lo < 0.0) == (f_hi < 0.0) {
         return None;
     }
-    let mut side = 0;
+    // Orient the bracket so that p(lo) < 0 < p(hi).
+    if f_lo > 0.0 {
+        std::mem::swap(&mut lo, &mut hi);
+    }
+    let tolerance = precision * (lo.abs().max(hi.abs()) + (hi - lo).abs());
+    let mut x = 0.5 * (lo + hi);
+    let mut last_step = (hi - lo).abs();
     for _ in 0..100 {
-        // Regula falsi with the Illinois correction, falling back to bisection when the
-        // secant leaves the bracket.
-        let mut x = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-        if !(x > lo && x < hi) {
-            x = 0.5 * (lo + hi);
-        }
-        let f = p.eval(x);
-        if f == 0.0 || hi - lo <= 1e-14 * (lo.abs() + hi.abs()) {
+        let (f, df) = p.eval_with_derivative(x);
+        if f == 0.0 {
             return Some(x);
         }
-        if (f < 0.0) == (f_lo < 0.0) {
+        if f < 0.0 {
             lo = x;
-            f_lo = f;
-            if side == -1 {
-                f_hi *= 0.5;
-            }
-            side = -1;
         } else {
             hi = x;
-            f_hi = f;
-            if side == 1 {
-                f_lo *= 0.5;
-            }
-            side = 1;
+        }
+        let newton = x - f / df;
+        let inside = (newton - lo) * (newton - hi) < 0.0;
+        let step = if inside && (f / df).abs() * 2.0 < last_step {
+            let step = (newton - x).abs();
+            x = newton;
+            step
+        } else {
+            let mid = 0.5 * (lo + hi);
+            let step = (mid - x).abs();
+            x = mid;
+            step
+        };
+        last_step = step;
+        if step <= tolerance {
+            return Some(x);
         }
     }
-    Some(0.5 * (lo + hi))
+    Some(x)
 }
 
 #[cfg(test)]

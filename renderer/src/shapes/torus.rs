@@ -21,11 +21,35 @@ impl Torus {
         let a = ray.direction.length_squared();
         let b = ray.origin.dot(ray.direction);
         let c = ray.origin.length_squared() - bound * bound;
-        let Some((t0, t1)) = super::solve_quadratic_half(a, b, c) else {
+        let Some((mut t0, mut t1)) = super::solve_quadratic_half(a, b, c) else {
             return;
         };
+        // The tube lies in the slab |y| <= minor and the annulus major ± minor around the
+        // y axis; most rays that reach the bounding sphere miss one of them, which costs
+        // far less to find out than the quartic.
+        let (o, d) = (ray.origin, ray.direction);
+        if d.y != 0.0 {
+            let (ya, yb) = ((-small - o.y) / d.y, (small - o.y) / d.y);
+            t0 = t0.max(ya.min(yb));
+            t1 = t1.min(ya.max(yb));
+        } else if o.y.abs() > small {
+            return;
+        }
+        if t0 > t1 {
+            return;
+        }
+        let rho2 = |t: f64| {
+            let (x, z) = (o.x + t * d.x, o.z + t * d.z);
+            x * x + z * z
+        };
+        let (e, f) = (d.x * d.x + d.z * d.z, o.x * d.x + o.z * d.z);
+        let apex = if e > 0.0 { -f / e } else { t0 };
+        let nearest = rho2(apex.clamp(t0, t1));
+        let farthest = rho2(t0).max(rho2(t1));
+        if nearest > bound * bound || farthest < (big - small) * (big - small) {
+            return;
+        }
         let o = ray.origin + ray.direction * t0;
-        let d = ray.direction;
         let (r2, k2) = (big * big, small * small);
         let qa = a;
         let qb = 2.0 * o.dot(d);
