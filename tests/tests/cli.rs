@@ -75,6 +75,24 @@ fn render_writes_a_png_of_the_requested_size() {
 }
 
 #[test]
+fn render_prints_debug_output_and_warnings() {
+    let dir = scene_dir(&[("scene.pov", "#debug \"rendering\\n\"\nsphere { 0, 1 }\n")]);
+    let output = povrayst(
+        dir.path(),
+        &["render", "scene.pov", "--width", "4", "--height", "3"],
+    );
+    assert_eq!(output.status.code(), Some(0));
+    expect![[r#"
+        rendering
+        scene.pov:1:1: warning: this scene has no #version directive; assuming #version 3.7
+            1 | #debug "rendering\n"
+              | ^
+        note: add `#version 3.7;` as the scene's first line
+    "#]]
+    .assert_eq(&stderr(&output));
+}
+
+#[test]
 fn extra_options_come_after_the_flags() {
     let dir = scene_dir(&[("scene.pov", SPHERE)]);
     let args = [

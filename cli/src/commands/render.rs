@@ -55,6 +55,9 @@ pub fn run(args: &RenderArgs) -> Outcome {
             return Outcome::SceneErrors;
         }
     };
+    for message in &rendered.messages {
+        eprint!("{}", message.text);
+    }
     eprint!("{}", rendered.warnings_to_human());
     let output = args
         .output
