@@ -188,6 +188,11 @@ fn scene_errors_are_the_gcc_style_report() {
             ", includes: (\"materials.inc\": \"#declare Copper = texture {\\n  pigment { color\\n  rgb Tint }\\n}\\n\")",
         ),
         (
+            "include cycle",
+            "#include \"a.inc\"\n",
+            ", includes: (\"a.inc\": \"#include \\\"b.inc\\\"\\n\", \"b.inc\": \"#include \\\"a.inc\\\"\\n\")",
+        ),
+        (
             "binary file",
             "sphere { 0, 1 }\n",
             ", files: (\"map.png\": bytes((137, 80, 78, 71)))",
@@ -204,10 +209,7 @@ fn scene_errors_are_the_gcc_style_report() {
         .collect();
     expect![[r#"
         --- unclosed brace
-        plugin errored with: scene.pov:3:1: error: expected an object modifier or '}' in sphere, found end of file
-            3 | 
-              | ^
-        scene.pov:1:8: note: the object starts here
+        plugin errored with: scene.pov:1:8: error: unclosed '{'
             1 | sphere { 0, 1
               |        ^
 
@@ -218,9 +220,9 @@ fn scene_errors_are_the_gcc_style_report() {
         note: did you mean 'Radius'?
 
         --- missing #end
-        plugin errored with: scene.pov:1:1: error: missing #end for this #if
+        plugin errored with: scene.pov:1:1: error: #if has no matching #end
             1 | #if (1)
-              | ^
+              | ^~~
 
         --- #error
         plugin errored with: scene.pov:2:1: error: N is 3
@@ -232,7 +234,7 @@ fn scene_errors_are_the_gcc_style_report() {
             1 | #include "materials.inc"
               |          ^~~~~~~~~~~~~~~
         note: files available: other.inc
-        note: standard includes: colors.inc, consts.inc
+        note: standard includes: colors.inc, consts.inc, functions.inc, math.inc, shapes.inc, shapes_old.inc, strings.inc, transforms.inc
 
         --- error inside an include
         plugin errored with: materials.inc:3:7: error: undeclared identifier 'Tint'
@@ -241,6 +243,17 @@ fn scene_errors_are_the_gcc_style_report() {
         scene.pov:1:10: note: in 'materials.inc' included here
             1 | #include "materials.inc"
               |          ^~~~~~~~~~~~~~~
+
+        --- include cycle
+        plugin errored with: b.inc:1:10: error: include cycle: a.inc -> b.inc -> a.inc
+            1 | #include "a.inc"
+              |          ^~~~~~~
+        a.inc:1:10: note: in 'b.inc' included here
+            1 | #include "b.inc"
+              |          ^~~~~~~
+        scene.pov:1:10: note: in 'a.inc' included here
+            1 | #include "a.inc"
+              |          ^~~~~~~
 
         --- binary file
         plugin errored with: files: map.png: not supported yet: binary files (image maps, height fields, fonts)
