@@ -30,6 +30,7 @@ fn probe(scene: &str, args: &str) -> Value {
 #metadata((
   width: r.width, height: r.height, encoding: r.encoding, error: r.error,
   bytes: if r.pixels != none {{ r.pixels.len() }},
+  corner-rgb: if r.error == none {{ range(3).map(c => sample(0, 0, c)) }},
   corner-alpha: if r.error == none and channels == 4 {{ sample(0, 0, 3) }},
   centre-alpha: if r.error == none and channels == 4 {{ sample(calc.quo(r.width, 2), calc.quo(r.height, 2), 3) }},
   lit-rows: lit.len(),
@@ -49,6 +50,8 @@ fn an_opaque_render_is_rgb_of_the_requested_size() {
     assert_eq!(result["height"], 24);
     assert_eq!(result["encoding"], "rgb8");
     assert_eq!(result["bytes"], 32 * 24 * 3);
+    // Without output-alpha a transparent background is opaque black, as in POV-Ray.
+    assert_eq!(result["corner-rgb"], serde_json::json!([0, 0, 0]));
 }
 
 #[test]
