@@ -10,6 +10,7 @@ use std::sync::Arc;
 /// The files one scene can read.
 #[derive(Debug, Clone)]
 pub struct DiskFiles {
+    scene: PathBuf,
     search_path: Vec<PathBuf>,
 }
 
@@ -23,15 +24,19 @@ impl DiskFiles {
         let search_path = std::iter::once(scene_dir)
             .chain(library_paths.iter().cloned())
             .collect();
-        DiskFiles { search_path }
+        DiskFiles {
+            scene: scene.to_path_buf(),
+            search_path,
+        }
     }
 }
 
 impl FileSource for DiskFiles {
     fn read(&self, name: &str) -> Option<Arc<str>> {
         let path = Path::new(name);
-        // The scene itself, named as on the command line, and absolute include paths.
-        let direct = path.is_absolute() || path.exists();
+        // The scene itself, named as on the command line, and absolute include paths; other
+        // names are relative to the search path, never to the working directory.
+        let direct = path.is_absolute() || path == self.scene;
         let candidates = direct
             .then(|| path.to_path_buf())
             .into_iter()
@@ -81,6 +86,9 @@ mod tests {
         assert_eq!(files.read("a.inc").as_deref(), Some("// scene dir"));
         assert_eq!(files.read("b.inc").as_deref(), Some("// library b"));
         assert_eq!(files.read("c.inc"), None);
+        // Tests run in the crate's directory, which has a Cargo.toml; it is not on the path.
+        assert!(Path::new("Cargo.toml").exists());
+        assert_eq!(files.read("Cargo.toml"), None);
         assert_eq!(files.names(), ["a.inc", "b.inc"]);
     }
 }
