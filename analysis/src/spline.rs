@@ -36,7 +36,8 @@ impl Spline {
             return points[0].1;
         }
         let (first, last) = match kind {
-            SplineKind::Cubic if n >= 4 => (1, n - 2),
+            // Cubic splines use their end points as tangent handles only.
+            SplineKind::Cubic if n >= 3 => (1, n - 2),
             _ => (0, n - 1),
         };
         if t <= points[first].0 {
@@ -50,42 +51,67 @@ impl Spline {
             .unwrap_or(last - 1);
         let (k0, p0) = points[i];
         let (k1, p1) = points[i + 1];
-        let u = (t - k0) / (k1 - k0);
+        let h = k1 - k0;
+        let u = (t - k0) / h;
         let mut out = Terms::splat(0.0, len);
-        match kind {
-            SplineKind::Linear => {
-                for c in 0..len as usize {
-                    out.c[c] = p0.c[c] + (p1.c[c] - p0.c[c]) * u;
+        for c in 0..len as usize {
+            out.c[c] = match kind {
+                SplineKind::Linear => p0.c[c] + (p1.c[c] - p0.c[c]) * u,
+                SplineKind::Quadratic => {
+                    // The parabola through the segment's ends and the point before it (the
+                    // one after it for the first segment), as measured against POV-Ray 3.7.
+                    let base = if i == 0 { 0 } else { i - 1 };
+                    let keys: Vec<f64> = (base..(base + 3).min(n)).map(|j| points[j].0).collect();
+                    let values: Vec<f64> = (base..(base + 3).min(n))
+                        .map(|j| points[j].1.c[c])
+                        .collect();
+                    lagrange(&keys, &values, t)
                 }
-            }
-            SplineKind::Quadratic | SplineKind::Cubic => {
-                // Catmull-Rom with one-sided tangents at the ends of the valid range.
-                let prev = if i > 0 {
-                    points[i - 1]
-                } else {
-                    (k0 - (k1 - k0), p0)
-                };
-                let next = if i + 2 < n {
-                    points[i + 2]
-                } else {
-                    (k1 + (k1 - k0), p1)
-                };
-                for c in 0..len as usize {
-                    let m0 = (p1.c[c] - prev.1.c[c]) / (k1 - prev.0) * (k1 - k0);
-                    let m1 = (next.1.c[c] - p0.c[c]) / (next.0 - k0) * (k1 - k0);
-                    out.c[c] = hermite(p0.c[c], p1.c[c], m0, m1, u);
+                SplineKind::Cubic => {
+                    // Hermite segments whose tangents average the slopes of the neighbouring
+                    // segments, scaled to this segment's length (measured against POV-Ray 3.7).
+                    let slope = |a: usize, b: usize| {
+                        (points[b].1.c[c] - points[a].1.c[c]) / (points[b].0 - points[a].0)
+                    };
+                    let tangent = |j: usize| {
+                        let before = if j > 0 {
+                            slope(j - 1, j)
+                        } else {
+                            slope(j, j + 1)
+                        };
+                        let after = if j + 1 < n {
+                            slope(j, j + 1)
+                        } else {
+                            slope(j - 1, j)
+                        };
+                        0.5 * (before + after) * h
+                    };
+                    hermite(p0.c[c], p1.c[c], tangent(i), tangent(i + 1), u)
                 }
-            }
-            SplineKind::Natural => {
-                for c in 0..len as usize {
+                SplineKind::Natural => {
                     let keys: Vec<f64> = points.iter().map(|(k, _)| *k).collect();
                     let values: Vec<f64> = points.iter().map(|(_, p)| p.c[c]).collect();
-                    out.c[c] = natural_cubic(&keys, &values, i, t);
+                    natural_cubic(&keys, &values, i, t)
                 }
-            }
+            };
         }
         out
     }
+}
+
+/// The polynomial through `(keys[j], values[j])`, at `t`.
+fn lagrange(keys: &[f64], values: &[f64], t: f64) -> f64 {
+    let mut sum = 0.0;
+    for (j, (&kj, &vj)) in keys.iter().zip(values).enumerate() {
+        let mut weight = 1.0;
+        for (m, &km) in keys.iter().enumerate() {
+            if m != j {
+                weight *= (t - km) / (kj - km);
+            }
+        }
+        sum += weight * vj;
+    }
+    sum
 }
 
 fn hermite(p0: f64, p1: f64, m0: f64, m1: f64, u: f64) -> f64 {

@@ -10,7 +10,7 @@ use analysis::scene::{Object, Scene};
 use glam::DVec3;
 
 /// The extent POV-Ray gives unbounded objects.
-const HUGE_BOUND: f64 = 2.0e10;
+const HUGE_BOUND: f64 = 1.0e10;
 
 /// The renderer's implementation of [`analysis::Geometry`].
 #[derive(Debug, Clone, Copy, Default)]

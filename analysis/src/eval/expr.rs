@@ -37,6 +37,8 @@ impl BinOp {
             BinOp::Add => a + b,
             BinOp::Sub => a - b,
             BinOp::Mul => a * b,
+            // POV-Ray answers +inf for any division by zero, 0/0 and -1/0 included.
+            BinOp::Div if b == 0.0 => f64::INFINITY,
             BinOp::Div => a / b,
             BinOp::Lt => truth(a < b),
             BinOp::Le => truth(a < b || equal),
@@ -282,9 +284,18 @@ impl Evaluator<'_> {
             PLUS => self.unary(),
             BANG => {
                 let value = self.unary()?;
-                Ok(Value::Float(f64::from(u8::from(
-                    self.to_float(&token, value)? == 0.0,
-                ))))
+                let not = |v: f64| f64::from(u8::from(!is_true(v)));
+                match value {
+                    Value::Float(v) => Ok(Value::Float(not(v))),
+                    Value::Vector(mut t) => {
+                        t.c.iter_mut().for_each(|c| *c = not(*c));
+                        Ok(Value::Vector(t))
+                    }
+                    other => Err(self.error_at(
+                        &token,
+                        format!("cannot apply '!' to a {}", other.type_name()),
+                    )),
+                }
             }
             _ => {
                 self.unget(token);

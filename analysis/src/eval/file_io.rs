@@ -171,6 +171,17 @@ impl Evaluator<'_> {
                         Some(slot) => *slot.borrow_mut() = value,
                         None => self.declare(&name, value),
                     }
+                    // Reading the last item closes the file at once (measured against
+                    // POV-Ray 3.7), so `defined(Handle)` is false right after it.
+                    let at_end = match &file.borrow().reading {
+                        Some((text, pos)) => text[*pos..]
+                            .trim_start_matches(|c: char| c.is_whitespace() || c == ',')
+                            .is_empty(),
+                        None => false,
+                    };
+                    if at_end {
+                        self.undef(&handle_name);
+                    }
                 }
                 Ok(None) => {
                     self.undef(&handle_name);

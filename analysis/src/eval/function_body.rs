@@ -18,6 +18,7 @@ impl Evaluator<'_> {
     pub fn function_value(&mut self) -> Result<Function> {
         let keyword = self.expect(FUNCTION_KW, "'function'")?;
         let mut params = Vec::new();
+        let explicit_params = self.peek_kind()? == L_PAREN;
         if self.eat(L_PAREN)? {
             loop {
                 let name = self.next_raw()?;
@@ -50,6 +51,10 @@ impl Evaluator<'_> {
         }
         if let Some(body) = self.special_function_body(&first)? {
             self.expect(R_BRACE, "'}' to close the function")?;
+            // A spline function takes the spline's parameter only.
+            if matches!(body, Body::Spline(_)) && !explicit_params {
+                params.truncate(1);
+            }
             return Ok(Function { params, body });
         }
         let mut code = Vec::new();

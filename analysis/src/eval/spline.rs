@@ -45,13 +45,16 @@ impl Evaluator<'_> {
                             format!("expected a spline point, found {}", value.type_name()),
                         )
                     })?;
+                    // A float point is a 2-component one; of two points with the same
+                    // parameter the first stays (both measured against POV-Ray 3.7).
                     let terms = if terms.len == 1 {
-                        Terms::splat(terms.c[0], 3)
+                        Terms::splat(terms.c[0], 2)
                     } else {
                         terms
                     };
-                    spline.points.retain(|(k, _)| *k != key);
-                    spline.points.push((key, terms));
+                    if !spline.points.iter().any(|(k, _)| *k == key) {
+                        spline.points.push((key, terms));
+                    }
                     self.eat(COMMA)?;
                 }
             }

@@ -243,6 +243,7 @@ fn call(p: &mut Parser<'_>) -> CompletedMarker {
 // Row(1, sphere { 0, 1 }, pigment { Red })
 // Field(HF, off, off <100, 100>, on)
 // #declare V = vrotate(x, <0, 90, 0>);
+// #declare P = S(0.5, natural_spline);
 /// `(value, value, ...)`: arguments may be any value; an empty one is a macro's
 /// optional parameter left out.
 pub(super) fn arg_list(p: &mut Parser<'_>) {
@@ -257,6 +258,13 @@ pub(super) fn arg_list(p: &mut Parser<'_>) {
                 match p.current() {
                     COMMA => p.bump_any(),
                     HASH => directives::directive(p),
+                    // A spline called as another type: `S(t, natural_spline)`.
+                    LINEAR_SPLINE_KW | QUADRATIC_SPLINE_KW | CUBIC_SPLINE_KW
+                    | NATURAL_SPLINE_KW => {
+                        let m = p.start();
+                        p.bump_any();
+                        m.complete(p, PROPERTY);
+                    }
                     // The binary formats of `#write`: `uint8 Value`.
                     kind if BINARY_FORMATS.contains(kind) => {
                         let m = p.start();
