@@ -60,6 +60,134 @@ impl Poly {
     }
 }
 
+/// Appends to `out` the real roots of the quartic `coeffs` (lowest degree first) in
+/// `[lo, hi]`: Ferrari's closed form through the resolvent cubic, each root then polished
+/// by two Newton steps on the quartic itself. Far cheaper than the general search, which
+/// it falls back to when the leading coefficient vanishes.
+pub fn quartic_roots_in(coeffs: &[f64; 5], lo: f64, hi: f64) -> ([f64; 4], usize) {
+    let mut found = ([0.0; 4], 0);
+    let mut keep = |x: f64| {
+        if x >= lo && x <= hi && x.is_finite() && found.1 < 4 {
+            found.0[found.1] = x;
+            found.1 += 1;
+        }
+    };
+    let lead = coeffs[4];
+    let scale = coeffs.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    if !(lead.abs() > 1e-14 * scale) || !scale.is_finite() {
+        let mut searched = Vec::new();
+        roots_in(coeffs, lo, hi, &mut searched);
+        searched.into_iter().for_each(&mut keep);
+        return found;
+    }
+    let (a, b, c, d) = (
+        coeffs[3] / lead,
+        coeffs[2] / lead,
+        coeffs[1] / lead,
+        coeffs[0] / lead,
+    );
+    // Depressed quartic y⁴ + p y² + q y + r with x = y - a/4.
+    let sub = a / 4.0;
+    let a2 = a * a;
+    let p = b - 3.0 / 8.0 * a2;
+    let q = c - a * b / 2.0 + a2 * a / 8.0;
+    let r = d - a * c / 4.0 + a2 * b / 16.0 - 3.0 / 256.0 * a2 * a2;
+    let mut ys = [0.0; 4];
+    let mut n = 0;
+    if r.abs() < 1e-14 {
+        // y (y³ + p y + q) = 0.
+        ys[n] = 0.0;
+        n += 1;
+        let (cubic, count) = cubic_roots(0.0, p, q);
+        for &y in &cubic[..count] {
+            ys[n] = y;
+            n += 1;
+        }
+    } else {
+        // One real root of the resolvent z³ - p/2 z² - r z + (r p / 2 - q² / 8).
+        let z = cubic_roots(-p / 2.0, -r, r * p / 2.0 - q * q / 8.0).0[0];
+        let u = z * z - r;
+        let v = 2.0 * z - p;
+        let (u, v) = (
+            if u < 0.0 {
+                if u > -1e-12 { 0.0 } else { f64::NAN }
+            } else {
+                u.sqrt()
+            },
+            if v < 0.0 {
+                if v > -1e-12 { 0.0 } else { f64::NAN }
+            } else {
+                v.sqrt()
+            },
+        );
+        if u.is_nan() || v.is_nan() {
+            let mut searched = Vec::new();
+            roots_in(coeffs, lo, hi, &mut searched);
+            searched.into_iter().for_each(&mut keep);
+            return found;
+        }
+        let v = if q < 0.0 { -v } else { v };
+        for (bq, cq) in [(v, z - u), (-v, z + u)] {
+            let disc = bq * bq - 4.0 * cq;
+            if disc >= 0.0 {
+                let root = disc.sqrt();
+                let qq = -0.5 * (bq + bq.signum() * root);
+                if qq != 0.0 {
+                    ys[n] = qq;
+                    ys[n + 1] = cq / qq;
+                    n += 2;
+                } else {
+                    ys[n] = 0.0;
+                    n += 1;
+                }
+            }
+        }
+    }
+    let poly = |x: f64| {
+        let value = (((coeffs[4] * x + coeffs[3]) * x + coeffs[2]) * x + coeffs[1]) * x + coeffs[0];
+        let slope = ((4.0 * coeffs[4] * x + 3.0 * coeffs[3]) * x + 2.0 * coeffs[2]) * x + coeffs[1];
+        (value, slope)
+    };
+    for &y in &ys[..n] {
+        let mut x = y - sub;
+        for _ in 0..2 {
+            let (f, df) = poly(x);
+            if df != 0.0 {
+                let next = x - f / df;
+                if next.is_finite() {
+                    x = next;
+                }
+            }
+        }
+        keep(x);
+    }
+    found.0[..found.1].sort_by(f64::total_cmp);
+    found
+}
+
+/// The real roots of the monic cubic x³ + a x² + b x + c and how many there are (1 or 3).
+fn cubic_roots(a: f64, b: f64, c: f64) -> ([f64; 3], usize) {
+    let q = (a * a - 3.0 * b) / 9.0;
+    let r = (2.0 * a * a * a - 9.0 * a * b + 27.0 * c) / 54.0;
+    let shift = a / 3.0;
+    if r * r < q * q * q {
+        let theta = (r / (q * q * q).sqrt()).clamp(-1.0, 1.0).acos();
+        let m = -2.0 * q.sqrt();
+        (
+            [
+                m * (theta / 3.0).cos() - shift,
+                m * ((theta + 2.0 * std::f64::consts::PI) / 3.0).cos() - shift,
+                m * ((theta - 2.0 * std::f64::consts::PI) / 3.0).cos() - shift,
+            ],
+            3,
+        )
+    } else {
+        let big = -r.signum() * (r.abs() + (r * r - q * q * q).sqrt()).cbrt();
+        let small = if big != 0.0 { q / big } else { 0.0 };
+        ([big + small - shift, 0.0, 0.0], 1)
+    }
+}
+
 /// Appends to `out` the distinct real roots of `coeffs` (at most degree 15) in
 /// `[lo, hi]`, ascending.
 pub fn roots_in(coeffs: &[f64], lo: f64, hi: f64, out: &mut Vec<f64>) {
@@ -214,6 +342,28 @@ mod tests {
             assert!((got - want).abs() < 1e-10, "{r:?}");
         }
         assert_eq!(roots(&[24.0, -50.0, 35.0, -10.0, 1.0], 1.5, 3.5).len(), 2);
+    }
+
+    #[test]
+    fn closed_form_quartic_agrees_with_the_search() {
+        for coeffs in [
+            [24.0, -50.0, 35.0, -10.0, 1.0],
+            [1.0, 0.0, -5.0, 0.0, 4.0],
+            [0.3, -1.2, 0.1, 0.7, 2.0],
+            [1.0, 0.0, 0.0, 0.0, 1.0],
+        ] {
+            let (found, n) = quartic_roots_in(&coeffs, -10.0, 10.0);
+            let closed = &found[..n];
+            let searched = roots(&coeffs, -10.0, 10.0);
+            assert_eq!(
+                closed.len(),
+                searched.len(),
+                "{coeffs:?}: {closed:?} {searched:?}"
+            );
+            for (a, b) in closed.iter().zip(&searched) {
+                assert!((a - b).abs() < 1e-9, "{coeffs:?}: {closed:?} {searched:?}");
+            }
+        }
     }
 
     #[test]

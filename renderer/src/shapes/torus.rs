@@ -64,9 +64,8 @@ impl Torus {
             2.0 * qa * qb,
             qa * qa,
         ];
-        let mut found = Vec::with_capacity(4);
-        polynomial::roots_in(&coeffs, 0.0, t1 - t0, &mut found);
-        for t in found {
+        let (found, n) = polynomial::quartic_roots_in(&coeffs, 0.0, t1 - t0);
+        for &t in &found[..n] {
             roots.push(t0 + t, 0);
         }
     }
