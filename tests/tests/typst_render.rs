@@ -129,6 +129,12 @@ fn includes_are_read_by_the_evaluator() {
 }
 
 #[test]
+fn standard_includes_need_no_setup() {
+    let scene = "#include \"colors.inc\"\ncamera { location -4*z look_at 0 }\nsphere { 0, 1 pigment { color Orange } }\n";
+    assert_eq!(probe(scene, ", width: 8, height: 6")["error"], Value::Null);
+}
+
+#[test]
 fn messages_returns_the_debug_output() {
     let doc = Document::new(&format!(
         "{IMPORT}#metadata(messages(\"#debug \\\"one\\\\n\\\"\\n#declare N = 2;\\n#debug concat(\\\"N = \\\", str(N, 0, 0), \\\"\\\\n\\\")\\nsphere {{ 0, 1 }}\", width: 4, height: 3)) <result>\n"
