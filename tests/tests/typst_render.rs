@@ -129,6 +129,20 @@ fn includes_are_read_by_the_evaluator() {
 }
 
 #[test]
+fn warnings_reach_typst_as_text() {
+    let doc = Document::new(&format!(
+        "{IMPORT}#metadata(try-render(read(\"scene.pov\"), width: 4, height: 3).warnings) <result>\n"
+    ))
+    .with_file("scene.pov", "#version 3.7;\n#warning \"careful\"\nsphere { 0, 1 }\n");
+    expect![[r#"
+        scene.pov:2:1: warning: careful
+            2 | #warning "careful"
+              | ^
+    "#]]
+    .assert_eq(doc.query("<result>").unwrap().as_str().unwrap());
+}
+
+#[test]
 fn standard_includes_need_no_setup() {
     let scene = "#include \"colors.inc\"\ncamera { location -4*z look_at 0 }\nsphere { 0, 1 pigment { color Orange } }\n";
     assert_eq!(probe(scene, ", width: 8, height: 6")["error"], Value::Null);

@@ -12,7 +12,7 @@ use minicbor::Encoder;
 #[derive(Debug, Clone, PartialEq)]
 pub struct Response {
     pub outcome: Result<Pixels, String>,
-    /// `#debug` and `#warning` output, in the order the scene produced it.
+    /// `#debug` output, in the order the scene produced it.
     pub messages: Vec<Message>,
     /// Warning diagnostics (gcc-style text), empty when there are none.
     pub warnings: String,
@@ -43,10 +43,10 @@ impl Encoding {
     }
 }
 
-/// One line a scene printed with `#debug` or `#warning`.
+/// Text a scene printed with `#debug`.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Message {
-    /// `"debug"` or `"warning"`.
+    /// The stream's name: `"debug"`.
     pub stream: &'static str,
     pub text: String,
 }
@@ -140,12 +140,12 @@ mod tests {
         let response = Response {
             outcome: Err("scene.pov:1:1: error: stop\n".into()),
             messages: vec![Message {
-                stream: "warning",
-                text: "careful".into(),
+                stream: "debug",
+                text: "before the error".into(),
             }],
             warnings: "scene.pov:1:1: warning: no #version\n".into(),
         };
-        expect![[r#"M[3] "error" "scene.pov:1:1: error: stop\n" "messages" A[1] M[2] "stream" "warning" "text" "careful" "warnings" "scene.pov:1:1: warning: no #version\n""#]]
+        expect![[r#"M[3] "error" "scene.pov:1:1: error: stop\n" "messages" A[1] M[2] "stream" "debug" "text" "before the error" "warnings" "scene.pov:1:1: warning: no #version\n""#]]
             .assert_eq(&tokens(&response.encode()));
     }
 }
