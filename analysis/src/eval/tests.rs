@@ -182,12 +182,11 @@ fn files_written_can_be_read_back() {
 #fopen G "data.txt" read
 #read (G, S, A, V)
 #debug concat(S, " ", str(A, 0, 2), " ", vstr(3, V, ",", 0, 0), "\n")
-#read (G, Extra)
-#debug concat(str(defined(G), 0, 0), "\n")
+#debug concat("open after the last item: ", str(defined(G), 0, 0), "\n")
 "#,
         expect![[r#"
             name -1.50 1,2,3
-            0
+            open after the last item: 0
         "#]],
     );
 }
