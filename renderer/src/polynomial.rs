@@ -74,7 +74,7 @@ pub fn quartic_roots_in(coeffs: &[f64; 5], lo: f64, hi: f64) -> ([f64; 4], usize
     };
     let lead = coeffs[4];
     let scale = coeffs.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-    if !(lead.abs() > 1e-14 * scale) || !scale.is_finite() {
+    if lead.abs() <= 1e-14 * scale || !scale.is_finite() || lead.is_nan() {
         let mut searched = Vec::new();
         roots_in(coeffs, lo, hi, &mut searched);
         searched.into_iter().for_each(&mut keep);
