@@ -99,15 +99,16 @@ impl Evaluator<'_> {
                 ));
             };
             for v in &mut c.c[..3] {
-                *v = srgb_to_linear(*v).powf(1.0 / gamma);
+                *v = f64::from(srgb_to_linear(*v as f32).powf(1.0 / gamma as f32));
             }
         }
         Ok(c)
     }
 }
 
-/// The sRGB transfer function, decoding one component.
-fn srgb_to_linear(v: f64) -> f64 {
+/// The sRGB transfer function, decoding one component. POV-Ray computes it in single
+/// precision, and scenes that print the result see the difference.
+fn srgb_to_linear(v: f32) -> f32 {
     if v <= 0.04045 {
         v / 12.92
     } else {

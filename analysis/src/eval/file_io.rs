@@ -85,7 +85,8 @@ impl Evaluator<'_> {
                 &handle,
                 format!("'{name}' is a {}, not a file", other.type_name()),
             )),
-            None => Err(self.error_at(&handle, format!("'{name}' is not an open file"))),
+            // A file read to its end is already closed; closing it again is harmless.
+            None => Ok(()),
         }
     }
 
