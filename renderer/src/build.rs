@@ -5,7 +5,7 @@
 use crate::bvh::Bvh;
 use crate::colour::Sample;
 use crate::light::Light;
-use crate::material::{self, Material};
+use crate::material::Material;
 use crate::object::{Csg, CsgKind, Leaf, Object, Visibility};
 use crate::shapes::{Cone, Cuboid, Cylinder, Disc, Plane, Shape, Sphere, Torus, Triangle};
 use crate::tracer::{Quality, World};
@@ -132,9 +132,7 @@ impl Builder {
         if let Some(m) = self.materials.get(&key) {
             return Ok(m.clone());
         }
-        let m = Material::from_scene(texture).map_err(fail)?;
-        material::check_finish(&m.finish).map_err(fail)?;
-        let m = Arc::new(m);
+        let m = Arc::new(Material::from_scene(texture).map_err(fail)?);
         self.materials.insert(key, m.clone());
         Ok(m)
     }

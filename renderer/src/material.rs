@@ -1,5 +1,6 @@
-//! Surface materials at run time: the texture (pigment and finish) and interior an object
-//! was given, ready to be evaluated at a point. Features not implemented yet are refused when
+//! Surface materials at run time: the texture an object was given (layers of pigment,
+//! normal and finish, or texture maps blending textures), ready to be evaluated at a
+//! point. Features not implemented yet are refused when
 //! the material is built, with a message naming them, rather than drawn wrongly.
 
 use analysis::pattern::{self, PatternValue};
@@ -7,15 +8,98 @@ use analysis::scene::{self, Colour, Finish};
 use glam::DVec3;
 use std::sync::Arc;
 
-/// What a surface looks like and what is behind it.
+/// One layer of a texture: its colour, bumps and finish.
 #[derive(Debug, Clone)]
-pub struct Material {
+pub struct Layer {
     pub pigment: Pigment,
     pub normal: Option<scene::Normal>,
     pub finish: Arc<Finish>,
-    /// Whether any point of the pigment lets light through, so that shadow rays must look
-    /// at the colour.
+}
+
+/// What a surface looks like: layers (the top one first, each showing those below through
+/// its filter and transmit), or a pattern choosing among or blending between materials
+/// (`texture_map` and the block patterns of textures).
+#[derive(Debug, Clone)]
+pub enum Surface {
+    Layers(Vec<Layer>),
+    Pattern {
+        pattern: Box<scene::Pattern>,
+        /// Map values ascending, with their surfaces.
+        map: Vec<(f64, Surface)>,
+    },
+}
+
+/// A surface with what the tracer needs to know about it at a glance.
+#[derive(Debug, Clone)]
+pub struct Material {
+    pub surface: Surface,
+    /// Whether light can pass at some point, so that shadow rays must look at the colour.
     pub transmits: bool,
+}
+
+/// Where a pattern value falls in a map: the entries either side and the weight of the
+/// upper one (0 when both are the same entry).
+fn locate<T>(map: &[(f64, T)], value: PatternValue) -> (usize, usize, f64) {
+    match value {
+        PatternValue::Block(i) => {
+            let i = i.min(map.len() - 1);
+            (i, i, 0.0)
+        }
+        PatternValue::Blend(v) => {
+            let upper = map.partition_point(|(at, _)| *at <= v);
+            if upper == 0 {
+                return (0, 0, 0.0);
+            }
+            if upper == map.len() {
+                return (upper - 1, upper - 1, 0.0);
+            }
+            let (a, b) = (map[upper - 1].0, map[upper].0);
+            let t = if b > a { (v - a) / (b - a) } else { 1.0 };
+            (upper - 1, upper, t)
+        }
+    }
+}
+
+impl Surface {
+    /// Calls `f` with each stack of layers that shows at `p` and its weight.
+    pub fn for_each_layers(&self, p: DVec3, weight: f64, f: &mut impl FnMut(f64, &[Layer])) {
+        match self {
+            Surface::Layers(layers) => f(weight, layers),
+            Surface::Pattern { pattern, map } => {
+                let (a, b, t) = locate(map, pattern::evaluate(pattern, p));
+                if a == b || t == 0.0 {
+                    map[a].1.for_each_layers(p, weight, f);
+                } else if t == 1.0 {
+                    map[b].1.for_each_layers(p, weight, f);
+                } else {
+                    map[a].1.for_each_layers(p, weight * (1.0 - t), f);
+                    map[b].1.for_each_layers(p, weight * t, f);
+                }
+            }
+        }
+    }
+
+    /// The colour light keeps through the surface at `p`: the product of each layer's
+    /// filtered and transmitted colour, averaged over a texture map's blend.
+    pub fn transmitted_at(&self, p: DVec3) -> DVec3 {
+        let mut total = DVec3::ZERO;
+        self.for_each_layers(p, 1.0, &mut |w, layers| {
+            let through = layers.iter().fold(DVec3::ONE, |acc, layer| {
+                let c = layer.pigment.colour_at(p);
+                acc * (c.rgb * c.filter + DVec3::splat(c.transmit))
+            });
+            total += through * w;
+        });
+        total
+    }
+
+    /// Whether light can pass somewhere: every layer of some stack lets some through.
+    fn may_transmit(&self) -> bool {
+        match self {
+            Surface::Layers(layers) => layers.iter().all(|l| l.pigment.may_transmit()),
+            Surface::Pattern { map, .. } => map.iter().any(|(_, s)| s.may_transmit()),
+        }
+    }
 }
 
 /// The colour of a surface point.
@@ -34,22 +118,14 @@ impl Pigment {
     pub fn colour_at(&self, p: DVec3) -> Colour {
         match self {
             Pigment::Solid(c) => *c,
-            Pigment::Pattern { pattern, map } => match pattern::evaluate(pattern, p) {
-                PatternValue::Block(i) => map[i.min(map.len() - 1)].1.colour_at(p),
-                PatternValue::Blend(v) => {
-                    let upper = map.partition_point(|(at, _)| *at <= v);
-                    if upper == 0 {
-                        return map[0].1.colour_at(p);
-                    }
-                    if upper == map.len() {
-                        return map[map.len() - 1].1.colour_at(p);
-                    }
-                    let (a, pa) = &map[upper - 1];
-                    let (b, pb) = &map[upper];
-                    let t = if b > a { (v - a) / (b - a) } else { 1.0 };
-                    pa.colour_at(p).lerp(pb.colour_at(p), t)
+            Pigment::Pattern { pattern, map } => {
+                let (a, b, t) = locate(map, pattern::evaluate(pattern, p));
+                if a == b || t == 0.0 {
+                    map[a].1.colour_at(p)
+                } else {
+                    map[a].1.colour_at(p).lerp(map[b].1.colour_at(p), t)
                 }
-            },
+            }
         }
     }
 
@@ -65,27 +141,63 @@ impl Pigment {
 impl Material {
     /// The runtime form of a scene texture; `Err` names the first unsupported feature.
     pub fn from_scene(texture: &scene::Texture) -> Result<Material, String> {
-        match texture {
-            scene::Texture::Plain {
-                pigment,
-                normal,
-                finish,
-            } => {
-                if let Some(n) = normal {
-                    crate::normal::check(n)?;
-                }
-                let pigment = pigment_from_scene(pigment)?;
-                Ok(Material {
-                    transmits: pigment.may_transmit(),
-                    pigment,
-                    normal: normal.clone(),
-                    finish: finish.clone(),
-                })
+        let surface = surface_from_scene(texture)?;
+        Ok(Material {
+            transmits: surface.may_transmit(),
+            surface,
+        })
+    }
+}
+
+fn surface_from_scene(texture: &scene::Texture) -> Result<Surface, String> {
+    match texture {
+        scene::Texture::Plain { .. } => Ok(Surface::Layers(vec![layer_from_scene(texture)?])),
+        scene::Texture::Layered(layers) => {
+            // The scene lists layers from the bottom up; the tracer starts at the top.
+            let layers = layers
+                .iter()
+                .rev()
+                .map(layer_from_scene)
+                .collect::<Result<Vec<_>, String>>()?;
+            Ok(Surface::Layers(layers))
+        }
+        scene::Texture::Pattern { pattern, map } => {
+            pattern::check(pattern)?;
+            let mut entries = map
+                .entries
+                .iter()
+                .map(|(at, t)| Ok((*at, surface_from_scene(t)?)))
+                .collect::<Result<Vec<_>, String>>()?;
+            if entries.is_empty() {
+                return Err("a texture pattern without textures".into());
             }
-            scene::Texture::Pattern { .. } => Err("not supported yet: texture maps".into()),
-            scene::Texture::Layered(_) => Err("not supported yet: layered textures".into()),
+            entries.sort_by(|a, b| a.0.total_cmp(&b.0));
+            Ok(Surface::Pattern {
+                pattern: pattern.clone(),
+                map: entries,
+            })
         }
     }
+}
+
+fn layer_from_scene(texture: &scene::Texture) -> Result<Layer, String> {
+    let scene::Texture::Plain {
+        pigment,
+        normal,
+        finish,
+    } = texture
+    else {
+        return Err("not supported yet: texture maps inside layered textures".into());
+    };
+    if let Some(n) = normal {
+        crate::normal::check(n)?;
+    }
+    check_finish(finish)?;
+    Ok(Layer {
+        pigment: pigment_from_scene(pigment)?,
+        normal: normal.clone(),
+        finish: finish.clone(),
+    })
 }
 
 fn pigment_from_scene(pigment: &scene::Pigment) -> Result<Pigment, String> {
@@ -111,7 +223,7 @@ fn pigment_from_scene(pigment: &scene::Pigment) -> Result<Pigment, String> {
 }
 
 /// Checks the finish for features the shader does not draw yet.
-pub fn check_finish(finish: &Finish) -> Result<(), String> {
+fn check_finish(finish: &Finish) -> Result<(), String> {
     if finish.crand > 0.0 {
         return Err("not supported yet: crand".into());
     }
@@ -122,4 +234,73 @@ pub fn check_finish(finish: &Finish) -> Result<(), String> {
         return Err("not supported yet: irid".into());
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use analysis::scene::{BlendMap, Pattern, PatternKind};
+
+    fn plain(rgb: DVec3) -> scene::Texture {
+        scene::Texture::Plain {
+            pigment: scene::Pigment::Solid(Colour {
+                rgb,
+                filter: 0.0,
+                transmit: 0.0,
+            }),
+            normal: None,
+            finish: Arc::new(Finish::default()),
+        }
+    }
+
+    fn weights(material: &Material, p: DVec3) -> Vec<(f64, DVec3)> {
+        let mut seen = Vec::new();
+        material.surface.for_each_layers(p, 1.0, &mut |w, layers| {
+            seen.push((w, layers[0].pigment.colour_at(p).rgb));
+        });
+        seen
+    }
+
+    #[test]
+    fn texture_maps_blend_and_block_patterns_choose() {
+        let map = BlendMap {
+            entries: vec![(0.0, plain(DVec3::X)), (1.0, plain(DVec3::Y))],
+        };
+        let gradient = scene::Texture::Pattern {
+            pattern: Box::new(Pattern::new(PatternKind::Gradient(DVec3::X))),
+            map: map.clone(),
+        };
+        let m = Material::from_scene(&gradient).unwrap();
+        let seen = weights(&m, DVec3::new(0.25, 0.0, 0.0));
+        assert_eq!(seen, vec![(0.75, DVec3::X), (0.25, DVec3::Y)]);
+        let checker = scene::Texture::Pattern {
+            pattern: Box::new(Pattern::new(PatternKind::Checker)),
+            map,
+        };
+        let m = Material::from_scene(&checker).unwrap();
+        assert_eq!(
+            weights(&m, DVec3::new(1.5, 0.5, 0.5)),
+            vec![(1.0, DVec3::Y)]
+        );
+        assert!(!m.transmits);
+    }
+
+    #[test]
+    fn layers_filter_the_light_through_them() {
+        let clear = scene::Texture::Plain {
+            pigment: scene::Pigment::Solid(Colour {
+                rgb: DVec3::new(1.0, 0.5, 0.0),
+                filter: 0.5,
+                transmit: 0.25,
+            }),
+            normal: None,
+            finish: Arc::new(Finish::default()),
+        };
+        let layered = scene::Texture::Layered(vec![clear.clone(), clear]);
+        let m = Material::from_scene(&layered).unwrap();
+        assert!(m.transmits);
+        // Each layer keeps filter * colour + transmit: (0.75, 0.5, 0.25), twice.
+        let through = m.surface.transmitted_at(DVec3::ZERO);
+        assert!((through - DVec3::new(0.5625, 0.25, 0.0625)).length() < 1e-12);
+    }
 }

@@ -7,6 +7,7 @@
 use crate::bvh::Bvh;
 use crate::colour::Sample;
 use crate::light::{Incoming, Light};
+use crate::material::Layer;
 use crate::object::{Hit, Leaf, Query};
 use crate::ray::{Ray, RayKind};
 use analysis::scene::{Finish, Interior};
@@ -103,51 +104,99 @@ impl<'w> Tracer<'w> {
     }
 
     fn shade(&mut self, ray: &Ray, hit: &Hit<'w>, level: u32, weight: f64) -> Sample {
-        let world = self.world;
         let p = ray.at(hit.t);
-        let leaf = hit.leaf;
+        let leaf: &'w Leaf = hit.leaf;
         let mut normal = leaf.normal(p, hit.part);
         // POV-Ray lights the side the ray sees.
         if normal.dot(ray.direction) > 0.0 {
             normal = -normal;
         }
-        let material = &leaf.material;
-        let pigment = material.pigment.colour_at(p);
-        let finish = &*material.finish;
+        // A texture map shades each texture it blends and mixes the results.
+        let mut total = Sample::default();
+        leaf.material
+            .surface
+            .for_each_layers(p, 1.0, &mut |w, layers| {
+                let s = self.shade_layers(ray, p, normal, hit, layers, level, weight * w);
+                total = total + s * w;
+            });
+        total
+    }
+
+    /// One stack of texture layers, top first, as POV-Ray shades them: each layer adds its
+    /// own light scaled by what the layers above let through, then the light from behind
+    /// the surface passes all of them, and each layer's reflection is added.
+    #[allow(clippy::too_many_arguments)]
+    fn shade_layers(
+        &mut self,
+        ray: &Ray,
+        p: DVec3,
+        raw_normal: DVec3,
+        hit: &Hit<'w>,
+        layers: &[Layer],
+        level: u32,
+        weight: f64,
+    ) -> Sample {
+        let world = self.world;
+        let leaf: &'w Leaf = hit.leaf;
         if !world.quality.lighting {
-            return Sample::new(pigment.rgb, 0.0);
+            let top = layers
+                .first()
+                .map_or(DVec3::ZERO, |l| l.pigment.colour_at(p).rgb);
+            return Sample::new(top, 0.0);
         }
-        if let Some(bumps) = &material.normal
-            && world.quality.normals
-        {
-            normal = crate::normal::perturb(bumps, p, normal);
-        }
-        let opacity = if world.legacy_opacity {
-            1.0 - (pigment.filter * pigment.rgb.max_element() + pigment.transmit)
-        } else {
-            1.0 - pigment.filter - pigment.transmit
-        };
-        let cos_incidence = -ray.direction.dot(normal);
         let relative_ior = self.relative_ior(&leaf.interior);
-        let reflectivity = reflectivity(finish, pigment.rgb, cos_incidence, relative_ior);
+        let mut colour = DVec3::ZERO;
+        // What the layers so far let through, and how much of it counts.
+        let mut filter = DVec3::ONE;
+        let mut trans = 1.0;
+        let mut top_normal = raw_normal;
+        // Each layer's reflectivity, normal and exponent, for after the loop.
+        let mut reflections: Vec<(DVec3, DVec3, f64)> = Vec::new();
+        for (i, layer) in layers.iter().enumerate() {
+            if trans <= world.adc_bailout {
+                break;
+            }
+            let mut normal = raw_normal;
+            if let Some(bumps) = &layer.normal
+                && world.quality.normals
+            {
+                normal = crate::normal::perturb(bumps, p, normal);
+            }
+            if i == 0 {
+                top_normal = normal;
+            }
+            let pigment = layer.pigment.colour_at(p);
+            let finish = &*layer.finish;
+            let opacity = if world.legacy_opacity {
+                1.0 - (pigment.filter * pigment.rgb.max_element() + pigment.transmit)
+            } else {
+                1.0 - pigment.filter - pigment.transmit
+            };
+            let cos_incidence = -ray.direction.dot(normal);
+            let reflectivity = reflectivity(finish, pigment.rgb, cos_incidence, relative_ior);
+            let exponent = finish.reflection.as_ref().map_or(1.0, |r| r.exponent);
+            reflections.push((reflectivity, normal, exponent));
 
-        let mut colour =
-            pigment.rgb * (finish.ambient * world.ambient_light + finish.emission) * opacity;
-        for light in &world.lights {
-            colour += self.direct_light(light, p, normal, ray, pigment.rgb, finish, opacity);
+            let mut own =
+                pigment.rgb * (finish.ambient * world.ambient_light + finish.emission) * opacity;
+            for light in &world.lights {
+                own += self.direct_light(light, p, normal, ray, pigment.rgb, finish, opacity);
+            }
+            colour += own * filter;
+
+            filter *= pigment.rgb * pigment.filter + DVec3::splat(pigment.transmit);
+            if finish.conserve_energy {
+                filter *= (DVec3::ONE - reflectivity).min(DVec3::ONE);
+            }
+            trans = greyscale(filter).abs().min(1.0);
         }
 
-        // Light filtered or transmitted through the surface.
-        let mut filter = pigment.rgb * pigment.filter + DVec3::splat(pigment.transmit);
-        if finish.conserve_energy {
-            filter *= (DVec3::ONE - reflectivity).min(DVec3::ONE);
-        }
-        let trans = greyscale(filter).abs().min(1.0);
+        // Light from behind the surface.
         let mut transmit = 0.0;
         let mut total_reflection = false;
         if trans > world.adc_bailout && world.quality.secondary_rays {
             let new_weight = weight * filter.abs().max_element();
-            let (through, tir) = self.transmitted(ray, p, normal, leaf, level, new_weight);
+            let (through, tir) = self.transmitted(ray, p, top_normal, leaf, level, new_weight);
             total_reflection = tir;
             let fade = self.fade(&leaf.interior, hit.t);
             if tir {
@@ -158,11 +207,18 @@ impl<'w> Tracer<'w> {
             }
         }
 
-        if world.quality.secondary_rays && !total_reflection && reflectivity != DVec3::ZERO {
-            let new_weight = weight * reflectivity.max_element();
-            if new_weight > world.adc_bailout {
+        if world.quality.secondary_rays {
+            for (reflectivity, normal, exponent) in reflections {
+                // Total internal reflection has already reflected along the top normal.
+                let same_as_top = (normal - top_normal).abs().max_element() <= 1e-10;
+                if reflectivity == DVec3::ZERO || (total_reflection && same_as_top) {
+                    continue;
+                }
+                let new_weight = weight * reflectivity.max_element();
+                if new_weight <= world.adc_bailout {
+                    continue;
+                }
                 let reflected = self.reflect(ray, p, normal, level, new_weight);
-                let exponent = finish.reflection.as_ref().map_or(1.0, |r| r.exponent);
                 let reflected = if exponent != 1.0 && exponent > 0.0 {
                     reflected.max(DVec3::ZERO).powf(1.0 / exponent)
                 } else {
@@ -291,8 +347,7 @@ impl<'w> Tracer<'w> {
                 return DVec3::ZERO;
             }
             let point = q.ray.at(hit.t);
-            let c = leaf.material.pigment.colour_at(point);
-            colour *= c.rgb * c.filter + DVec3::splat(c.transmit);
+            colour *= leaf.material.surface.transmitted_at(point);
             let interior: &'w Interior = &leaf.interior;
             match inside.iter().position(|i| std::ptr::eq(*i, interior)) {
                 Some(at) => {
