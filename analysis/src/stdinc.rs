@@ -3,9 +3,14 @@
 //! no file system, as in the Typst plugin. The files live in `analysis/stdinc/`; its
 //! README says how each was written and where its facts come from.
 
-/// Every embedded include file, by the name a scene uses, sorted by name.
+/// Every embedded include file (and the colour-map files, `ash.map` ...), by the name a
+/// scene uses, sorted by name.
 const FILES: &[(&str, &str)] = &[
     ("arrays.inc", include_str!("../stdinc/arrays.inc")),
+    ("ash.map", include_str!("../stdinc/ash.map")),
+    ("benediti.map", include_str!("../stdinc/benediti.map")),
+    ("bubinga.map", include_str!("../stdinc/bubinga.map")),
+    ("cedar.map", include_str!("../stdinc/cedar.map")),
     ("colors.inc", include_str!("../stdinc/colors.inc")),
     ("consts.inc", include_str!("../stdinc/consts.inc")),
     ("debug.inc", include_str!("../stdinc/debug.inc")),
@@ -14,17 +19,30 @@ const FILES: &[(&str, &str)] = &[
     ("glass.inc", include_str!("../stdinc/glass.inc")),
     ("glass_old.inc", include_str!("../stdinc/glass_old.inc")),
     ("golds.inc", include_str!("../stdinc/golds.inc")),
+    ("marbteal.map", include_str!("../stdinc/marbteal.map")),
     ("math.inc", include_str!("../stdinc/math.inc")),
     ("metals.inc", include_str!("../stdinc/metals.inc")),
+    ("orngwood.map", include_str!("../stdinc/orngwood.map")),
+    ("pinkmarb.map", include_str!("../stdinc/pinkmarb.map")),
     ("rad_def.inc", include_str!("../stdinc/rad_def.inc")),
     ("rand.inc", include_str!("../stdinc/rand.inc")),
+    ("rdgranit.map", include_str!("../stdinc/rdgranit.map")),
     ("shapes.inc", include_str!("../stdinc/shapes.inc")),
     ("shapes_old.inc", include_str!("../stdinc/shapes_old.inc")),
+    ("skies.inc", include_str!("../stdinc/skies.inc")),
+    ("stars.inc", include_str!("../stdinc/stars.inc")),
     ("stdcam.inc", include_str!("../stdinc/stdcam.inc")),
     ("stdinc.inc", include_str!("../stdinc/stdinc.inc")),
+    ("stones.inc", include_str!("../stdinc/stones.inc")),
+    ("stones1.inc", include_str!("../stdinc/stones1.inc")),
+    ("stones2.inc", include_str!("../stdinc/stones2.inc")),
     ("strings.inc", include_str!("../stdinc/strings.inc")),
+    ("teak.map", include_str!("../stdinc/teak.map")),
     ("textures.inc", include_str!("../stdinc/textures.inc")),
     ("transforms.inc", include_str!("../stdinc/transforms.inc")),
+    ("whiteash.map", include_str!("../stdinc/whiteash.map")),
+    ("woodmaps.inc", include_str!("../stdinc/woodmaps.inc")),
+    ("woods.inc", include_str!("../stdinc/woods.inc")),
 ];
 
 /// The text of the standard include file a scene names, such as `"colors.inc"`.

@@ -134,3 +134,13 @@ for probe in "$here"/probes/*.pov; do
     "$here/run-probe.sh" "$std" "$probe" >"${probe%.pov}.out"
 done
 echo "measure.sh: expected output of every probe written to $here/probes"
+
+# Colour maps: woodmaps.inc's and the .map files', sampled by measure-maps.py.
+maps=""
+for i in $(seq 1 19); do maps="$maps woodmaps.inc:M_Wood${i}A woodmaps.inc:M_Wood${i}B"; done
+for file in "$std"/*.map; do
+    name=$(sed -nE 's/^[[:space:]]*#declare[[:space:]]+(M_[A-Za-z_0-9]+)[[:space:]]*=.*/\1/p' "$file" | head -1)
+    maps="$maps $(basename "$file"):$name"
+done
+python3 "$here/measure-maps.py" "$std" "$here/measured-maps.txt" $maps
+echo "measure.sh: $(grep -vc '^#' "$here/measured-maps.txt") colour-map entries written to $here/measured-maps.txt"

@@ -4,13 +4,20 @@
 # differ: the share of pixels that differ at all and the mean and largest difference per
 # channel (0-255).  The texture files are written to give the same look, so this is how
 # the look is checked.
-# Usage: analysis/stdinc/render-with-povray.sh [SCENE.pov...]   (+W/+H in the scene's
-# first line comment are ignored; every scene renders at 240x180 without antialiasing)
+# Textures with crand differ from run to run even in POV-Ray; --baseline renders with
+# POV-Ray's files twice, to show how much.
+# Usage: analysis/stdinc/render-with-povray.sh [--baseline] [SCENE.pov...]
+# (every scene renders at 240x180 without antialiasing)
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
 std=${POVRAY_INCLUDE_DIR:-/usr/share/povray-3.7/include}
 command -v povray >/dev/null || { echo "render-with-povray.sh: needs povray (apt-get install povray)" >&2; exit 1; }
+ours=$here
+if [ "${1:-}" = --baseline ]; then
+    ours=$std
+    shift
+fi
 [ $# -gt 0 ] || set -- "$here"/renders/*.pov
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -23,12 +30,12 @@ render() { # render INCLUDE_DIR SCENE OUTPUT
     cp "$std"/*.ttf "$std"/*.map "$std"/*.png "$dir"/ 2>/dev/null || true
     cp "$2" "$dir/scene.pov"
     (cd "$dir" && POVINI="$work/empty.ini" timeout 600 povray +Iscene.pov +O"$3" +FP +W240 +H180 -A -D \
-        -GA +GFfatal.txt >/dev/null 2>&1) || { echo "povray failed on $2:"; cat "$dir/fatal.txt"; return 1; }
+        >"$dir/log.txt" 2>&1) || { echo "povray failed on $2:"; grep -A3 'Error' "$dir/log.txt" | head -8; return 1; }
 }
 
 for scene in "$@"; do
     name=$(basename "$scene" .pov)
-    render "$std" "$scene" "$work/$name.theirs.ppm" && render "$here" "$scene" "$work/$name.ours.ppm" || continue
+    render "$std" "$scene" "$work/$name.theirs.ppm" && render "$ours" "$scene" "$work/$name.ours.ppm" || continue
     python3 - "$name" "$work/$name.theirs.ppm" "$work/$name.ours.ppm" <<'PY'
 import sys
 
