@@ -42,7 +42,7 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
     }
     let mut objects = Vec::with_capacity(scene.objects.len());
     for object in &scene.objects {
-        if let Some(built) = builder.object(object, None, None, Visibility::default())? {
+        if let Some(built) = builder.object(object, None, None, Visibility::default(), false)? {
             objects.push(built);
         }
     }
@@ -69,6 +69,7 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
         background,
         reflected_background: background_colour.rgb,
         ambient_light: scene.settings.ambient_light.rgb,
+        irid_wavelength: scene.settings.irid_wavelength,
         quality: Quality::from_level(settings.quality),
         max_trace_level: settings
             .max_trace_level
@@ -145,6 +146,7 @@ impl Builder {
         inherited: Option<&Arc<scene::Texture>>,
         inherited_interior: Option<&Arc<Interior>>,
         inherited_visibility: Visibility,
+        inherited_double: bool,
     ) -> Result<Option<Object>, BuildError> {
         let fail = |message: String| BuildError {
             message,
@@ -178,7 +180,10 @@ impl Builder {
                 }
                 let mut built = Vec::with_capacity(children.len());
                 for child in children {
-                    if let Some(c) = self.object(child, texture, Some(&interior), visibility)? {
+                    let double = flags.double_illuminate || inherited_double;
+                    if let Some(c) =
+                        self.object(child, texture, Some(&interior), visibility, double)?
+                    {
                         built.push(c);
                     } else if *op == CsgOp::Intersection {
                         // An empty child leaves an empty intersection.
@@ -311,14 +316,16 @@ impl Builder {
         if !to_world.is_finite() || to_world.matrix3.determinant() == 0.0 {
             return Err(fail("the object's transformation is singular".into()));
         }
-        Ok(Some(Object::Leaf(Leaf::new(
+        let mut leaf = Leaf::new(
             shape,
             to_world,
             flags.inverse,
             material,
             interior,
             visibility,
-        ))))
+        );
+        leaf.double_illuminate = flags.double_illuminate || inherited_double;
+        Ok(Some(Object::Leaf(leaf)))
     }
 }
 

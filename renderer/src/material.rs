@@ -224,14 +224,8 @@ fn pigment_from_scene(pigment: &scene::Pigment) -> Result<Pigment, String> {
 
 /// Checks the finish for features the shader does not draw yet.
 fn check_finish(finish: &Finish) -> Result<(), String> {
-    if finish.crand > 0.0 {
-        return Err("not supported yet: crand".into());
-    }
-    if finish.diffuse_back != 0.0 {
-        return Err("not supported yet: backside diffuse".into());
-    }
-    if finish.irid.is_some() {
-        return Err("not supported yet: irid".into());
+    if finish.diffuse_albedo {
+        return Err("not supported yet: diffuse albedo".into());
     }
     Ok(())
 }

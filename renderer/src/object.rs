@@ -46,6 +46,8 @@ pub struct Leaf {
     /// What fills the shape; shared by the leaves of one object.
     pub interior: Arc<Interior>,
     pub visibility: Visibility,
+    /// Lit from behind as from the front.
+    pub double_illuminate: bool,
     pub bounds: Aabb,
 }
 
@@ -78,6 +80,7 @@ impl Leaf {
             material,
             interior,
             visibility,
+            double_illuminate: false,
             bounds,
         }
     }

@@ -48,6 +48,8 @@ pub struct World {
     /// The background seen in reflections, which never show alpha.
     pub reflected_background: DVec3,
     pub ambient_light: DVec3,
+    /// `irid_wavelength`: the wavelengths of red, green and blue for iridescence.
+    pub irid_wavelength: DVec3,
     pub quality: Quality,
     pub max_trace_level: u32,
     pub adc_bailout: f64,
@@ -180,7 +182,16 @@ impl<'w> Tracer<'w> {
             let mut own =
                 pigment.rgb * (finish.ambient * world.ambient_light + finish.emission) * opacity;
             for light in &world.lights {
-                own += self.direct_light(light, p, normal, ray, pigment.rgb, finish, opacity);
+                own += self.direct_light(
+                    light,
+                    p,
+                    normal,
+                    ray,
+                    pigment.rgb,
+                    finish,
+                    opacity,
+                    leaf.double_illuminate,
+                );
             }
             colour += own * filter;
 
@@ -230,7 +241,9 @@ impl<'w> Tracer<'w> {
         Sample::new(colour, transmit)
     }
 
-    /// Diffuse light and highlights from one light source.
+    /// Diffuse light and highlights from one light source. A light behind the surface
+    /// lights it only through `double_illuminate` (both sides alike) or the finish's
+    /// backside diffuse (`diffuse front, back`, without highlights).
     #[allow(clippy::too_many_arguments)]
     fn direct_light(
         &mut self,
@@ -241,14 +254,20 @@ impl<'w> Tracer<'w> {
         surface: DVec3,
         finish: &Finish,
         opacity: f64,
+        double_illuminate: bool,
     ) -> DVec3 {
         let Some(incoming) = light.incoming(p) else {
             return DVec3::ZERO;
         };
-        let cos_in = normal.dot(incoming.direction);
-        if cos_in < 1e-10 {
-            return DVec3::ZERO;
+        let cos_signed = normal.dot(incoming.direction);
+        let mut backside = false;
+        if cos_signed < 1e-10 && !double_illuminate {
+            if finish.diffuse_back == 0.0 {
+                return DVec3::ZERO;
+            }
+            backside = true;
         }
+        let cos_in = cos_signed.abs();
         let world = self.world;
         let light_colour = if !light.shadowless && world.quality.shadows {
             self.unshadowed(light, p, &incoming)
@@ -259,17 +278,27 @@ impl<'w> Tracer<'w> {
             return DVec3::ZERO;
         }
         let mut colour = DVec3::ZERO;
-        if finish.diffuse > 0.0 {
-            let intensity = if finish.brilliance == 1.0 {
+        let diffuse = if backside {
+            finish.diffuse_back
+        } else {
+            finish.diffuse
+        };
+        if diffuse > 0.0 {
+            let mut intensity = if finish.brilliance == 1.0 {
                 cos_in
             } else {
                 cos_in.powf(finish.brilliance)
-            };
-            colour += light_colour * surface * (finish.diffuse * intensity * opacity);
+            } * diffuse
+                * opacity;
+            if finish.crand > 0.0 {
+                // Graininess: a fixed pseudo-random dimming per point.
+                intensity -= grain(p) * finish.crand;
+            }
+            colour += light_colour * surface * intensity;
         }
-        // POV-Ray's shadowless (fill) lights cause no highlights.
-        if light.shadowless {
-            return colour;
+        // POV-Ray's shadowless (fill) lights and backside light cause no highlights.
+        if light.shadowless || backside {
+            return self.iridescent(colour, finish, p, normal, ray, incoming.direction);
         }
         if finish.phong > 0.0 {
             let reflected = ray.direction - 2.0 * ray.direction.dot(normal) * normal;
@@ -293,7 +322,50 @@ impl<'w> Tracer<'w> {
                 }
             }
         }
+        self.iridescent(colour, finish, p, normal, ray, incoming.direction)
+    }
+
+    /// Thin-film interference (`irid { amount thickness turbulence }`): each channel of a
+    /// light's contribution scaled by `1 + amount cos(phase / wavelength)`, the phase
+    /// growing with the film's thickness and the angles to the light and the eye.
+    fn iridescent(
+        &self,
+        colour: DVec3,
+        finish: &Finish,
+        p: DVec3,
+        normal: DVec3,
+        ray: &Ray,
+        to_light: DVec3,
+    ) -> DVec3 {
+        let Some((amount, thickness, turbulence)) = finish.irid else {
+            return colour;
+        };
+        if amount <= 0.0 {
+            return colour;
+        }
+        let mut film = thickness;
+        if turbulence != 0.0 {
+            let (mut sum, mut weight, mut scale, mut total) = (0.0, 1.0, 1.0, 0.0);
+            for _ in 0..5 {
+                sum += analysis::noise::noise(p * scale) * weight;
+                total += weight;
+                weight *= 0.5;
+                scale *= 2.0;
+            }
+            film *= 1.0 + (2.0 * sum / total - 1.0) * turbulence;
+        }
+        let phase = std::f64::consts::TAU
+            * film
+            * (normal.dot(to_light).abs() + normal.dot(ray.direction).abs());
+        let waves = self.world.irid_wavelength;
         colour
+            * (DVec3::ONE
+                + amount
+                    * DVec3::new(
+                        (phase / waves.x).cos(),
+                        (phase / waves.y).cos(),
+                        (phase / waves.z).cos(),
+                    ))
     }
 
     /// The light that reaches `p` past every shadow-casting object: none behind an opaque
@@ -492,6 +564,11 @@ fn fade(interior: &Interior, depth: f64) -> DVec3 {
     }
     let k = 1.0 + (depth / interior.fade_distance).powf(interior.fade_power);
     colour + (DVec3::ONE - colour) / k
+}
+
+/// A pseudo-random value in 0..1 fixed for each point, for `crand`.
+fn grain(p: DVec3) -> f64 {
+    (hash3(p, 0, 0) >> 11) as f64 / (1u64 << 53) as f64
 }
 
 /// Samples an area light's grid adaptively, as POV-Ray does: the corners of a region
