@@ -139,8 +139,42 @@ impl Builder {
     }
 
     /// The runtime object for a scene object, or `None` when it has no surface at all
-    /// (a sphere of radius 0, an empty CSG).
+    /// (a sphere of radius 0, an empty CSG), with its `clipped_by` applied.
     fn object(
+        &mut self,
+        object: &scene::Object,
+        inherited: Option<&Arc<scene::Texture>>,
+        inherited_interior: Option<&Arc<Interior>>,
+        inherited_visibility: Visibility,
+        inherited_double: bool,
+    ) -> Result<Option<Object>, BuildError> {
+        let Some(built) = self.unclipped(
+            object,
+            inherited,
+            inherited_interior,
+            inherited_visibility,
+            inherited_double,
+        )?
+        else {
+            return Ok(None);
+        };
+        if object.clipped_by.is_empty() {
+            return Ok(Some(built));
+        }
+        let mut children = vec![built];
+        for clip in &object.clipped_by {
+            // A clipping shape without a surface leaves nothing inside it.
+            let Some(c) = self.unclipped(clip, inherited, None, Visibility::default(), false)?
+            else {
+                return Ok(None);
+            };
+            children.push(c);
+        }
+        Ok(Some(Object::Csg(Csg::new(CsgKind::Clip, children))))
+    }
+
+    /// The runtime object for a scene object without its `clipped_by`.
+    fn unclipped(
         &mut self,
         object: &scene::Object,
         inherited: Option<&Arc<scene::Texture>>,
@@ -152,9 +186,6 @@ impl Builder {
             message,
             origin: object.origin.clone(),
         };
-        if !object.clipped_by.is_empty() {
-            return Err(fail("not supported yet: clipped_by".into()));
-        }
         let flags = object.flags;
         let visibility = Visibility {
             no_image: flags.no_image || inherited_visibility.no_image,

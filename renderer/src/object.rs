@@ -158,6 +158,9 @@ pub enum CsgKind {
     Union,
     Merge,
     Intersection,
+    /// `clipped_by`: the first child's surface where it lies inside all the others, whose
+    /// own surfaces never show.
+    Clip,
 }
 
 impl Csg {
@@ -177,6 +180,12 @@ impl Csg {
                     .iter()
                     .fold(Aabb::INFINITE, |b, o| b.intersection(&o.region()));
                 (surfaces.intersection(&region), region)
+            }
+            CsgKind::Clip => {
+                let region = children
+                    .iter()
+                    .fold(Aabb::INFINITE, |b, o| b.intersection(&o.region()));
+                (children[0].bounds().intersection(&region), region)
             }
         };
         Csg {
@@ -236,10 +245,19 @@ impl Object {
                 l.inverse = !l.inverse;
                 Object::Leaf(l)
             }
+            Object::Csg(c) if c.kind == CsgKind::Clip => {
+                // The clipped object turns inside out; what clips it stays.
+                let mut children = c.children.into_iter();
+                let first = children.next().map(Object::inverted);
+                Object::Csg(Csg::new(
+                    CsgKind::Clip,
+                    first.into_iter().chain(children).collect(),
+                ))
+            }
             Object::Csg(c) => {
                 let kind = match c.kind {
                     CsgKind::Union | CsgKind::Merge => CsgKind::Intersection,
-                    CsgKind::Intersection => CsgKind::Union,
+                    _ => CsgKind::Union,
                 };
                 Object::Csg(Csg::new(
                     kind,
@@ -254,7 +272,7 @@ impl Object {
             Object::Leaf(l) => l.inside(p),
             Object::Csg(c) => match c.kind {
                 CsgKind::Union | CsgKind::Merge => c.children.iter().any(|o| o.inside(p)),
-                CsgKind::Intersection => c.children.iter().all(|o| o.inside(p)),
+                CsgKind::Intersection | CsgKind::Clip => c.children.iter().all(|o| o.inside(p)),
             },
         }
     }
@@ -360,6 +378,7 @@ impl Csg {
             CsgKind::Union => true,
             CsgKind::Merge => others.into_iter().all(|(_, o)| !o.inside(p)),
             CsgKind::Intersection => others.into_iter().all(|(_, o)| o.inside(p)),
+            CsgKind::Clip => from == 0 && others.into_iter().all(|(_, o)| o.inside(p)),
         }
     }
 }
