@@ -27,6 +27,7 @@ const FILES: &[(&str, &str)] = &[
     ("rad_def.inc", include_str!("../stdinc/rad_def.inc")),
     ("rand.inc", include_str!("../stdinc/rand.inc")),
     ("rdgranit.map", include_str!("../stdinc/rdgranit.map")),
+    ("screen.inc", include_str!("../stdinc/screen.inc")),
     ("shapes.inc", include_str!("../stdinc/shapes.inc")),
     ("shapes2.inc", include_str!("../stdinc/shapes2.inc")),
     ("shapes_old.inc", include_str!("../stdinc/shapes_old.inc")),
