@@ -1,0 +1,5 @@
+#version 3.7;
+// stage1.inc's camera, light and backdrop with a sphere in front.
+#include "stage1.inc"
+global_settings { assumed_gamma 1 }
+sphere { 0, 2 texture { Jade } }
