@@ -42,7 +42,10 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
     }
     let mut objects = Vec::with_capacity(scene.objects.len());
     for object in &scene.objects {
-        if let Some(built) = builder.object(object, None, None, Visibility::default(), false)? {
+        if let Some(mut built) = builder.object(object, None, None, Visibility::default(), false)? {
+            if let Object::Leaf(leaf) = &mut built {
+                leaf.standalone = true;
+            }
             objects.push(built);
         }
     }

@@ -48,6 +48,9 @@ pub struct Leaf {
     pub visibility: Visibility,
     /// Lit from behind as from the front.
     pub double_illuminate: bool,
+    /// A whole object of its own, not part of a CSG: its surface alone decides whether it
+    /// blocks a ray.
+    pub standalone: bool,
     pub bounds: Aabb,
 }
 
@@ -81,6 +84,7 @@ impl Leaf {
             interior,
             visibility,
             double_illuminate: false,
+            standalone: false,
             bounds,
         }
     }
@@ -104,6 +108,18 @@ impl Leaf {
 
     pub fn inside(&self, p: DVec3) -> bool {
         self.shape.inside(self.local_point(p)) != self.inverse
+    }
+
+    /// Whether this opaque standalone leaf crosses the query's interval.
+    pub fn blocks(&self, q: &Query) -> bool {
+        self.standalone
+            && !self.material.transmits
+            && self.visibility.sees(q.kind)
+            && self
+                .roots(&q.ray)
+                .as_slice()
+                .iter()
+                .any(|r| r.t > q.tmin && r.t < q.tmax)
     }
 
     /// The unit outward normal in the world at a point of this leaf's surface.

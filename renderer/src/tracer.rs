@@ -71,6 +71,12 @@ pub struct Tracer<'w> {
     scratch: Vec<Hit<'w>>,
     /// The interiors the current ray is inside, innermost last (compared by identity).
     interiors: Vec<&'w Interior>,
+    /// The opaque object that last blocked a shadow ray: neighbouring shadow rays are
+    /// usually blocked by it too, and one shape test is cheaper than the search.
+    last_blocker: Option<&'w Leaf>,
+    /// The shadow samples of an area light's grid for the current point, kept between
+    /// points to spare an allocation each time.
+    area_samples: Vec<Option<DVec3>>,
 }
 
 impl<'w> Tracer<'w> {
@@ -79,6 +85,8 @@ impl<'w> Tracer<'w> {
             world,
             scratch: Vec::new(),
             interiors: Vec::new(),
+            last_blocker: None,
+            area_samples: Vec::new(),
         }
     }
 
@@ -378,7 +386,9 @@ impl<'w> Tracer<'w> {
                 } else {
                     (grid.axis1, grid.axis2)
                 };
-                let mut samples = vec![None; (grid.size1 * grid.size2) as usize];
+                let mut samples = std::mem::take(&mut self.area_samples);
+                samples.clear();
+                samples.resize((grid.size1 * grid.size2) as usize, None);
                 let area = AreaSampler {
                     light,
                     point: p,
@@ -387,7 +397,9 @@ impl<'w> Tracer<'w> {
                     colour: incoming.colour,
                 };
                 let (s1, s2) = (grid.size1 as i32 - 1, grid.size2 as i32 - 1);
-                area.region(self, &mut samples, (0, 0, s1, s2), 0)
+                let light = area.region(self, &mut samples, (0, 0, s1, s2), 0);
+                self.area_samples = samples;
+                light
             }
             _ => self.filtered(p, incoming.direction, incoming.distance, incoming.colour),
         }
@@ -401,6 +413,13 @@ impl<'w> Tracer<'w> {
         // The interiors the shadow ray is inside, for distance fading; it starts outside
         // everything, as POV-Ray's shadow rays do.
         let mut inside: Vec<&'w Interior> = Vec::new();
+        if let Some(blocker) = self.last_blocker {
+            let eps = self.tolerance(p);
+            let q = Query::new(Ray::new(p, direction), RayKind::Shadow, eps, distance - eps);
+            if blocker.blocks(&q) {
+                return DVec3::ZERO;
+            }
+        }
         // Each transparent occluder filters the light and the search goes on beyond it;
         // the bound stops a pathological stack of surfaces.
         for _ in 0..64 {
@@ -416,6 +435,9 @@ impl<'w> Tracer<'w> {
             };
             let leaf: &'w Leaf = hit.leaf;
             if !leaf.material.transmits {
+                if leaf.standalone {
+                    self.last_blocker = Some(leaf);
+                }
                 return DVec3::ZERO;
             }
             let point = q.ray.at(hit.t);
