@@ -2,10 +2,14 @@
 //! and produces a [`scene::Scene`], the compiled `function { }` form, and the incremental
 //! analysis database that the language server queries.
 
+#[cfg(feature = "ide")]
+pub mod db;
 pub mod eval;
 pub mod files;
 pub mod function;
 pub mod geometry;
+#[cfg(feature = "ide")]
+pub mod ide;
 pub mod noise;
 pub mod pattern;
 pub mod scene;

@@ -28,6 +28,8 @@ enum Command {
     Check(commands::check::CheckArgs),
     /// Print a scene's syntax tree, and its syntax errors on stderr.
     Syntax(commands::syntax::SyntaxArgs),
+    /// Run the language server on stdin and stdout.
+    Lsp,
 }
 
 /// How a command ended, as the process's exit status.
@@ -56,6 +58,13 @@ fn main() -> ExitCode {
         Command::Render(args) => commands::render::run(&args),
         Command::Check(args) => commands::check::run(&args),
         Command::Syntax(args) => commands::syntax::run(&args),
+        Command::Lsp => match lsp::run_stdio() {
+            Ok(()) => Outcome::Success,
+            Err(error) => {
+                eprintln!("povrayst lsp: {error}");
+                Outcome::UsageOrIo
+            }
+        },
     }
     .into()
 }

@@ -5,6 +5,7 @@ pub mod broken_scenes;
 pub mod conformance;
 pub mod fidelity;
 pub mod image_compare;
+pub mod lsp_client;
 pub mod typst_compiler;
 
 use std::path::{Path, PathBuf};

@@ -1,0 +1,132 @@
+//! `povrayst lsp` as a process, driven over JSON-RPC as an editor drives it: initialize,
+//! open, edit, and read what it publishes.
+
+use serde_json::{Value, json};
+use tests::lsp_client::{LspProcess, uri};
+
+fn scene_dir(files: &[(&str, &str)]) -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    for (name, text) in files {
+        std::fs::write(dir.path().join(name), text).unwrap();
+    }
+    dir
+}
+
+/// Each diagnostic as `line:column severity message`, one-based as `povrayst check` says.
+fn summary(diagnostics: &[Value]) -> Vec<String> {
+    diagnostics
+        .iter()
+        .map(|d| {
+            let severity = match d["severity"].as_i64() {
+                Some(1) => "error",
+                Some(2) => "warning",
+                _ => "other",
+            };
+            format!(
+                "{}:{} {severity} {}",
+                d["range"]["start"]["line"].as_i64().unwrap() + 1,
+                d["range"]["start"]["character"].as_i64().unwrap() + 1,
+                d["message"]
+                    .as_str()
+                    .unwrap()
+                    .lines()
+                    .next()
+                    .unwrap_or_default()
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn diagnostics_follow_opens_and_edits_in_order() {
+    let dir = scene_dir(&[]);
+    let (mut server, init) = LspProcess::start(dir.path(), Value::Null);
+    assert_eq!(init["serverInfo"]["name"], "povrayst");
+    assert_eq!(init["capabilities"]["textDocumentSync"]["change"], 2);
+
+    let scene = uri(dir.path()).to_owned() + "/scene.pov";
+    server.open(
+        &scene,
+        "povray",
+        1,
+        "#version 3.7;\n#declare Radius = 1;\nsphere { 0, Raduis }\n",
+    );
+    assert_eq!(
+        summary(&server.diagnostics(&scene, Some(1))),
+        ["3:13 error undeclared identifier 'Raduis'"]
+    );
+
+    // Two edits sent back to back: the second only makes sense after the first.
+    server.edit(&scene, 2, (2, 12), (2, 18), "Radius");
+    server.edit(&scene, 3, (2, 12), (2, 18), "R");
+    assert_eq!(
+        summary(&server.diagnostics(&scene, Some(3))),
+        ["3:13 error undeclared identifier 'R'"]
+    );
+    server.edit(&scene, 4, (1, 9), (1, 15), "R");
+    assert_eq!(
+        summary(&server.diagnostics(&scene, Some(4))),
+        Vec::<String>::new()
+    );
+
+    server.notify(
+        "textDocument/didClose",
+        json!({"textDocument": {"uri": scene}}),
+    );
+    assert_eq!(server.diagnostics(&scene, None), Vec::<Value>::new());
+    assert_eq!(server.stop(), Some(0));
+}
+
+#[test]
+fn an_error_inside_an_include_shows_where_it_is_included() {
+    let dir = scene_dir(&[(
+        "materials.inc",
+        "#declare Copper = texture {\n  pigment { color\n  rgb Tint }\n}\n",
+    )]);
+    let (mut server, _) = LspProcess::start(dir.path(), Value::Null);
+    let scene = uri(dir.path()) + "/scene.pov";
+    server.open(
+        &scene,
+        "povray",
+        1,
+        "#version 3.7;\n#include \"materials.inc\"\n",
+    );
+    let diagnostics = server.diagnostics(&scene, Some(1));
+    assert_eq!(
+        summary(&diagnostics),
+        ["2:10 error undeclared identifier 'Tint'"]
+    );
+    let related = &diagnostics[0]["relatedInformation"][0];
+    assert_eq!(
+        related["location"]["uri"],
+        uri(dir.path()) + "/materials.inc"
+    );
+    assert_eq!(
+        related["location"]["range"]["start"],
+        json!({"line": 2, "character": 6})
+    );
+}
+
+#[test]
+fn a_panicking_request_is_answered_with_an_error_and_the_server_goes_on() {
+    let dir = scene_dir(&[]);
+    let (mut server, _) = LspProcess::start(dir.path(), Value::Null);
+    let error = server
+        .request("povrayst/crashTest", Value::Null)
+        .unwrap_err();
+    assert_eq!(error.code, -32603);
+    assert!(
+        error.message.contains("crash test requested"),
+        "{}",
+        error.message
+    );
+
+    let scene = uri(dir.path()) + "/scene.pov";
+    server.open(&scene, "povray", 1, "sphere { 0, 1\n");
+    assert_eq!(
+        summary(&server.diagnostics(&scene, Some(1))),
+        ["1:8 error unclosed '{'"]
+    );
+    assert!(server.is_running());
+    assert_eq!(server.stop(), Some(0));
+}
