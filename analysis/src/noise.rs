@@ -88,7 +88,9 @@ pub fn signed(p: DVec3) -> f64 {
 
 /// POV-Ray's `Noise`: 0..1 with mean 0.5.
 pub fn noise(p: DVec3) -> f64 {
-    (0.5 + 0.5 * signed(p)).clamp(0.0, 1.0)
+    // Measured against POV-Ray's bozo on a plane: its features are about 1.3 times wider
+    // and its values spread about as far as plain gradient noise's.
+    (0.5 + 0.51 * signed(p * 0.76)).clamp(0.0, 1.0)
 }
 
 /// A vector of three decorrelated signed noises, for turbulence displacements.
@@ -145,6 +147,6 @@ mod tests {
         }
         let mean = sum / n as f64;
         assert!((mean - 0.5).abs() < 0.02, "{mean}");
-        assert_eq!(noise(DVec3::new(3.0, 4.0, 5.0)), 0.5);
+        assert_eq!(noise(DVec3::ZERO), 0.5);
     }
 }
