@@ -36,6 +36,7 @@ pub fn check(pattern: &Pattern) -> Result<(), String> {
         PatternKind::Quilted { .. } => Some("the quilted pattern"),
         PatternKind::Square => Some("the square pattern"),
         PatternKind::Triangular => Some("the triangular pattern"),
+        PatternKind::Fractal(_) => Some("the fractal patterns (mandel, julia, magnet)"),
         _ => None,
     };
     if let Some(what) = unsupported {
@@ -55,6 +56,17 @@ pub fn check(pattern: &Pattern) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// Whether every pattern of a pigment can be evaluated; `Err` names the first that cannot.
+pub fn check_pigment(pigment: &Pigment) -> Result<(), String> {
+    match pigment {
+        Pigment::Solid(_) => Ok(()),
+        Pigment::Pattern { pattern, map } => {
+            check(pattern)?;
+            map.entries.iter().try_for_each(|(_, p)| check_pigment(p))
+        }
+    }
 }
 
 /// The pattern's value at a world point as one float: a block pattern's entry index, or

@@ -204,6 +204,12 @@ impl Builder {
             .or_else(|| inherited_interior.cloned())
             .unwrap_or_default();
         let (shape, frame) = match &object.shape {
+            scene::Shape::Quadric { .. } => {
+                return Err(BuildError {
+                    message: "not supported yet: quadric".into(),
+                    origin: object.origin.clone(),
+                });
+            }
             scene::Shape::Csg {
                 op,
                 children,

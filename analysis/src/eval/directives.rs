@@ -351,7 +351,11 @@ impl Evaluator<'_> {
                 self.next()?;
                 Ok(Value::Dictionary(Rc::new(self.dictionary_body()?)))
             }
-            MATERIAL_KW | MEDIA_KW | DENSITY_KW | NORMAL_MAP_KW | TEXTURE_MAP_KW | SLOPE_MAP_KW
+            MATERIAL_KW => {
+                self.next()?;
+                Ok(Value::Material(Rc::new(self.material_body()?)))
+            }
+            MEDIA_KW | DENSITY_KW | NORMAL_MAP_KW | TEXTURE_MAP_KW | SLOPE_MAP_KW
             | DENSITY_MAP_KW | FOG_KW | RAINBOW_KW | SKY_SPHERE_KW => {
                 Err(self.unsupported(&token, &format!("declaring a {}", self.text(&token))))
             }

@@ -127,7 +127,28 @@ impl Evaluator<'_> {
                     .map(|s| s.borrow().clone())
                     .unwrap_or(Value::Float(0.0))
             }
-            IDENT | L_PAREN => {
+            // One subscript, and no looking past it: `#debug A[I]` inside a loop must
+            // print before the loop's #end runs.
+            IDENT => {
+                let value = first
+                    .slot
+                    .as_ref()
+                    .map(|s| s.borrow().clone())
+                    .unwrap_or(Value::Float(0.0));
+                let open = self.next()?;
+                match open.kind {
+                    L_BRACK => self.subscript(&open, value)?,
+                    DOT if matches!(value, Value::Dictionary(_)) => {
+                        let item = self.next()?;
+                        self.dot_item(&item, value)?
+                    }
+                    _ => {
+                        self.unget(open);
+                        value
+                    }
+                }
+            }
+            L_PAREN => {
                 self.unget(first.clone());
                 self.postfix()?
             }

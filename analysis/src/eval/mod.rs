@@ -271,6 +271,15 @@ impl<'a> Evaluator<'a> {
 
     /// Loads a file once, by name: the caller's files first, then the standard includes.
     fn load(&mut self, name: &str) -> Option<FileId> {
+        // A file the scene wrote wins, read afresh each time since it may be rewritten
+        // (strings.inc's Parse_String writes a file and includes it).
+        if let Some(text) = self.written.get(name) {
+            let id = self.files.len() as FileId;
+            let text: Arc<str> = Arc::from(text.as_str());
+            self.sources.insert(name, text.clone());
+            self.files.push(SourceFile::new(name.to_owned(), text));
+            return Some(id);
+        }
         if let Some(&id) = self.file_ids.get(name) {
             return Some(id);
         }

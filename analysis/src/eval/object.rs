@@ -2,7 +2,7 @@
 //! object takes (transformations, textures, flags, clipping and bounding).
 
 use super::tokens::Token;
-use super::value::Value;
+use super::value::{MaterialValue, Value};
 use super::{Evaluator, Result};
 use crate::scene::{CsgOp, Interior, Light, Object, Shape, Texture, Transform};
 use glam::DVec3;
@@ -28,7 +28,6 @@ const UNSUPPORTED_SHAPES: &[SyntaxKind] = &[
     POLYGON_KW,
     POLYNOMIAL_KW,
     PRISM_KW,
-    QUADRIC_KW,
     QUARTIC_KW,
     SOR_KW,
     SPHERE_SWEEP_KW,
@@ -50,6 +49,7 @@ impl Evaluator<'_> {
                 | DISC_KW
                 | TRIANGLE_KW
                 | SMOOTH_TRIANGLE_KW
+                | QUADRIC_KW
                 | UNION_KW
                 | INTERSECTION_KW
                 | DIFFERENCE_KW
@@ -157,6 +157,24 @@ impl Evaluator<'_> {
                         normal,
                         radius,
                         hole_radius,
+                    },
+                    origin,
+                )
+            }
+            QUADRIC_KW => {
+                let squares = self.vector()?;
+                self.eat(COMMA)?;
+                let mixed = self.vector()?;
+                self.eat(COMMA)?;
+                let linear = self.vector()?;
+                self.eat(COMMA)?;
+                let constant = self.float()?;
+                Object::new(
+                    Shape::Quadric {
+                        squares,
+                        mixed,
+                        linear,
+                        constant,
                     },
                     origin,
                 )
@@ -378,23 +396,43 @@ impl Evaluator<'_> {
     }
 
     fn material(&mut self, object: &mut Object) -> Result<()> {
+        let material = self.material_body()?;
+        if let Some(texture) = material.texture {
+            object.texture = Some(Arc::new(texture));
+        }
+        if let Some(interior) = material.interior {
+            object.interior = Some(Arc::new(interior));
+        }
+        Ok(())
+    }
+
+    /// `{ [MATERIAL_IDENT] texture {...} interior {...} transformations }` after `material`.
+    pub fn material_body(&mut self) -> Result<MaterialValue> {
         self.expect(L_BRACE, "'{'")?;
+        let first = self.next()?;
+        let mut material = match first.slot.as_ref().map(|s| s.borrow().clone()) {
+            Some(Value::Material(m)) => MaterialValue::clone(&m),
+            _ => {
+                self.unget(first);
+                MaterialValue::default()
+            }
+        };
         loop {
             let token = self.next()?;
             match token.kind {
-                R_BRACE => return Ok(()),
+                R_BRACE => return Ok(material),
                 TEXTURE_KW => {
                     let texture = self.texture_body()?;
-                    object.texture = Some(Arc::new(texture));
+                    material.texture = Some(match material.texture.take() {
+                        Some(below) => layer(below, texture),
+                        None => texture,
+                    });
                 }
-                INTERIOR_KW => {
-                    let interior = self.interior_body()?;
-                    object.interior = Some(Arc::new(interior));
-                }
+                INTERIOR_KW => material.interior = Some(self.interior_body()?),
                 kind if Self::starts_transform(kind) => {
                     let t = self.transformation(&token)?;
-                    if let Some(texture) = &mut object.texture {
-                        super::texture::transform_texture(Arc::make_mut(texture), &t);
+                    if let Some(texture) = &mut material.texture {
+                        super::texture::transform_texture(texture, &t);
                     }
                 }
                 _ => {

@@ -8,6 +8,7 @@ use crate::scene::{
     BlendMap, Colour, Finish, Interior, Normal, NormalKind, Pattern, PatternKind, Pigment,
     Reflection, Texture, Transform, Turbulence, WaveType,
 };
+use crate::scene::{Fractal, FractalKind};
 use glam::DVec3;
 use std::sync::Arc;
 use syntax::SyntaxKind::{self, *};
@@ -275,6 +276,9 @@ impl Evaluator<'_> {
             WAVES_KW => PatternKind::Waves,
             WOOD_KW => PatternKind::Wood,
             WRINKLES_KW => PatternKind::Wrinkles,
+            MANDEL_KW | JULIA_KW | MAGNET_KW => {
+                PatternKind::Fractal(Box::new(self.fractal(keyword)?))
+            }
             _ => {
                 return Err(
                     self.unsupported(keyword, &format!("the {} pattern", self.text(keyword)))
@@ -284,6 +288,50 @@ impl Evaluator<'_> {
         let mut pattern = Pattern::new(kind);
         pattern.noise_generator = self.settings.noise_generator;
         Ok(pattern)
+    }
+
+    /// The parameters after `mandel`, `julia` or `magnet`.
+    fn fractal(&mut self, keyword: &Token) -> Result<Fractal> {
+        let kind = match keyword.kind {
+            MANDEL_KW => FractalKind::Mandel,
+            JULIA_KW => {
+                let c = self.vector_of(2)?;
+                self.eat(COMMA)?;
+                FractalKind::Julia {
+                    c: (c.c[0], c.c[1]),
+                }
+            }
+            _ => {
+                let variant = self.int()?.clamp(1, 2) as u8;
+                let which = self.next()?;
+                let julia = match which.kind {
+                    MANDEL_KW => None,
+                    JULIA_KW => {
+                        let c = self.vector_of(2)?;
+                        self.eat(COMMA)?;
+                        Some((c.c[0], c.c[1]))
+                    }
+                    _ => {
+                        return Err(self.error_at(
+                            &which,
+                            format!(
+                                "expected mandel or julia after magnet, found {}",
+                                self.describe(&which)
+                            ),
+                        ));
+                    }
+                };
+                FractalKind::Magnet { variant, julia }
+            }
+        };
+        let max_iteration = self.int()?.max(1) as u32;
+        Ok(Fractal {
+            kind,
+            max_iteration,
+            exponent: 2,
+            interior: (0, 1.0),
+            exterior: (1, 1.0),
+        })
     }
 
     /// A modifier of a pattern; false when `token` is not one.
@@ -366,6 +414,23 @@ impl Evaluator<'_> {
                 }
             }
             WARP_KW => return Err(self.unsupported(token, "warp")),
+            EXPONENT_KW | INTERIOR_KW | EXTERIOR_KW => {
+                let PatternKind::Fractal(fractal) = &mut pattern.kind else {
+                    return Ok(false);
+                };
+                if token.kind == EXPONENT_KW {
+                    fractal.exponent = self.int()?.clamp(2, 33) as u32;
+                } else {
+                    let kind = self.int()?.clamp(0, 6) as u8;
+                    self.eat(COMMA)?;
+                    let factor = self.float()?;
+                    if token.kind == INTERIOR_KW {
+                        fractal.interior = (kind, factor);
+                    } else {
+                        fractal.exterior = (kind, factor);
+                    }
+                }
+            }
             _ => return Ok(false),
         }
         Ok(true)

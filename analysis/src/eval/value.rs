@@ -78,6 +78,13 @@ pub struct CameraValue {
     pub transforms: Vec<Transform>,
 }
 
+/// A `material { }`: a texture and an interior, either of which may be absent.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct MaterialValue {
+    pub texture: Option<Texture>,
+    pub interior: Option<Interior>,
+}
+
 /// One value of any SDL type.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Value {
@@ -95,6 +102,7 @@ pub enum Value {
     Normal(Rc<Normal>),
     Finish(Rc<Finish>),
     Interior(Rc<Interior>),
+    Material(Rc<MaterialValue>),
     ColourMap(Rc<BlendMap<Colour>>),
     PigmentMap(Rc<BlendMap<Pigment>>),
     NormalMap(Rc<BlendMap<Normal>>),
@@ -141,6 +149,7 @@ impl Value {
             Value::Normal(_) => "normal",
             Value::Finish(_) => "finish",
             Value::Interior(_) => "interior",
+            Value::Material(_) => "material",
             Value::ColourMap(_) => "color_map",
             Value::PigmentMap(_) => "pigment_map",
             Value::NormalMap(_) => "normal_map",

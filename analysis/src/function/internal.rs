@@ -100,8 +100,8 @@ internals! {
     73 f_umbrella 1 None;
     74 f_witch_of_agnesi 2 None;
     75 f_witch_of_agnesi_2d 6 None;
-    76 f_noise3d 0 None;
-    78 f_noise_generator 1 None;
+    76 f_noise3d 0 Some(f_noise3d);
+    78 f_noise_generator 1 Some(f_noise3d);
 }
 
 impl Internal {
@@ -128,4 +128,10 @@ fn f_sphere(a: &[f64]) -> f64 {
 fn f_torus(a: &[f64]) -> f64 {
     let ring = (a[0] * a[0] + a[2] * a[2]).sqrt() - a[3];
     (ring * ring + a[1] * a[1]).sqrt() - a[4]
+}
+
+/// POV-Ray's solid noise, 0..1 (the same noise the patterns use; statistically POV-Ray's,
+/// not bit for bit).
+fn f_noise3d(a: &[f64]) -> f64 {
+    crate::noise::noise(glam::DVec3::new(a[0], a[1], a[2]))
 }

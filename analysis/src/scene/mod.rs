@@ -17,8 +17,8 @@ pub use light::{AreaLight, Light, LightKind};
 pub use object::{CsgOp, Interior, Object, ObjectFlags, Shape};
 pub use settings::{Fog, GlobalSettings, GroundFog, Photons, Radiosity, SkySphere};
 pub use texture::{
-    BlendMap, Finish, Normal, NormalKind, Pattern, PatternKind, Pigment, Reflection, Texture,
-    Turbulence, Warp, WaveType,
+    BlendMap, Finish, Fractal, FractalKind, Normal, NormalKind, Pattern, PatternKind, Pigment,
+    Reflection, Texture, Turbulence, Warp, WaveType,
 };
 pub use transform::Transform;
 

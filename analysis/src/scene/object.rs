@@ -52,6 +52,14 @@ pub enum Shape {
         minor: f64,
         sturm: bool,
     },
+    /// `quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }`: the surface
+    /// A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J = 0.
+    Quadric {
+        squares: DVec3,
+        mixed: DVec3,
+        linear: DVec3,
+        constant: f64,
+    },
     Triangle {
         corners: [DVec3; 3],
     },

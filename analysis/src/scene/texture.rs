@@ -118,6 +118,33 @@ pub enum PatternKind {
     Wood,
     Wrinkles,
     Object(Box<Object>),
+    /// `mandel N`, `julia <c>, N`, `magnet 1|2 mandel|julia N`: escape-time fractals, with
+    /// their `exponent`, `interior` and `exterior` colouring.
+    Fractal(Box<Fractal>),
+}
+
+/// The parameters of the fractal patterns.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Fractal {
+    pub kind: FractalKind,
+    pub max_iteration: u32,
+    pub exponent: u32,
+    /// `interior TYPE, FACTOR`; POV-Ray's default is type 0.
+    pub interior: (u8, f64),
+    /// `exterior TYPE, FACTOR`; POV-Ray's default is type 1.
+    pub exterior: (u8, f64),
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum FractalKind {
+    Mandel,
+    Julia {
+        c: (f64, f64),
+    },
+    Magnet {
+        variant: u8,
+        julia: Option<(f64, f64)>,
+    },
 }
 
 /// A pattern with its modifiers, in pattern space; `transform` takes pattern space to the
