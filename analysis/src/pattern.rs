@@ -262,11 +262,9 @@ fn apply_warp(warp: &Warp, p: DVec3) -> DVec3 {
 
 /// Frequency and phase, then the wave type; the result lies in 0..1.
 fn shape(pattern: &Pattern, raw: f64) -> f64 {
-    let wave = match (&pattern.kind, pattern.wave) {
-        // Marble and wood run their maps forth and back unless told otherwise.
-        (PatternKind::Marble | PatternKind::Wood, WaveType::Ramp) => WaveType::Triangle,
-        (_, w) => w,
-    };
+    // The evaluator gives marble and wood their triangle wave unless the scene says
+    // otherwise.
+    let wave = pattern.wave;
     let mut v = raw * pattern.frequency + pattern.phase;
     if !v.is_finite() {
         v = 0.0;

@@ -30,6 +30,8 @@ impl Rendered {
 pub struct Failure {
     pub diagnostics: Vec<Diagnostic>,
     pub sources: Sources,
+    /// The `#debug` text printed before the failure, which POV-Ray users expect to see.
+    pub messages: Vec<Message>,
 }
 
 impl Failure {
@@ -49,6 +51,7 @@ pub fn render_source(
         image_width: options.width,
         image_height: options.height,
         clock: options.clock.unwrap_or(0.0),
+        clock_on: options.clock.is_some(),
         ..EvalOptions::default()
     };
     let evaluation = analysis::check_with(main, files, &eval_options, &crate::SceneGeometry);
@@ -58,6 +61,7 @@ pub fn render_source(
             return Err(Failure {
                 diagnostics: evaluation.diagnostics,
                 sources: evaluation.sources,
+                messages: evaluation.messages,
             });
         }
     };
@@ -78,6 +82,7 @@ pub fn render_source(
             Err(Failure {
                 diagnostics,
                 sources: evaluation.sources,
+                messages: evaluation.messages,
             })
         }
     }

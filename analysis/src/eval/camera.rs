@@ -65,7 +65,8 @@ impl Evaluator<'_> {
                 LOOK_AT_KW => value.look_at = Some(self.vector()?),
                 ANGLE_KW => {
                     let angle = self.float()?;
-                    let vertical = if self.eat(COMMA)? {
+                    self.eat(COMMA)?;
+                    let vertical = if self.value_follows()? {
                         Some(self.float()?)
                     } else {
                         None

@@ -63,11 +63,44 @@ impl Evaluator<'_> {
                     let t = self.transformation(&token)?;
                     transform_texture(&mut texture, &t);
                 }
-                TEXTURE_MAP_KW | MATERIAL_MAP_KW | TILES_KW | IMAGE_MAP_KW => {
+                TILES_KW => texture = self.tiles()?,
+                MATERIAL_MAP_KW | IMAGE_MAP_KW => {
                     return Err(self.unsupported(&token, self.text(&token)));
                 }
                 kind if pattern_keyword(kind) => {
-                    return Err(self.unsupported(&token, "patterned textures"));
+                    let pattern = self.pattern(&token)?;
+                    let map = match block_entries(&pattern.kind) {
+                        Some(n) => self.block_textures(n)?,
+                        None => BlendMap {
+                            entries: Vec::new(),
+                        },
+                    };
+                    texture = Texture::Pattern {
+                        pattern: Box::new(pattern),
+                        map,
+                    };
+                }
+                TEXTURE_MAP_KW => {
+                    let Texture::Pattern { map, .. } = &mut texture else {
+                        return Err(
+                            self.error_at(&token, "a texture_map needs a pattern before it")
+                        );
+                    };
+                    *map = self.texture_map_body()?;
+                }
+                _ if matches!(texture, Texture::Pattern { .. }) => {
+                    let Texture::Pattern { pattern, .. } = &mut texture else {
+                        unreachable!("just matched")
+                    };
+                    if !self.pattern_modifier(pattern, &token)? {
+                        return Err(self.error_at(
+                            &token,
+                            format!(
+                                "expected a pattern modifier, texture_map or '}}', found {}",
+                                self.describe(&token)
+                            ),
+                        ));
+                    }
                 }
                 _ => {
                     return Err(self.error_at(
@@ -80,6 +113,124 @@ impl Evaluator<'_> {
                 }
             }
         }
+    }
+
+    /// The textures listed after a block pattern (`checker texture { A } texture { B }`).
+    fn block_textures(&mut self, count: usize) -> Result<BlendMap<Texture>> {
+        let mut entries = Vec::new();
+        while entries.len() < count && self.eat(TEXTURE_KW)? {
+            entries.push((entries.len() as f64, self.texture_body()?));
+            self.eat(COMMA)?;
+        }
+        Ok(BlendMap { entries })
+    }
+
+    /// `tiles { texture {...} tile2 texture {...} }`, the old form of a textured checker.
+    fn tiles(&mut self) -> Result<Texture> {
+        self.expect(L_BRACE, "'{'")?;
+        let mut first = Vec::new();
+        let mut second = Vec::new();
+        let mut in_second = false;
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => break,
+                TILE2_KW => in_second = true,
+                TEXTURE_KW => {
+                    let texture = self.texture_body()?;
+                    if in_second {
+                        second.push(texture)
+                    } else {
+                        first.push(texture)
+                    }
+                }
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected texture, tile2 or '}}' in tiles, found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+        let layered = |layers: Vec<Texture>| match layers.len() {
+            0 => Texture::default(),
+            1 => layers.into_iter().next().unwrap_or_default(),
+            _ => Texture::Layered(layers),
+        };
+        let entries = vec![(0.0, layered(first)), (1.0, layered(second))];
+        Ok(Texture::Pattern {
+            pattern: Box::new(Pattern::new(PatternKind::Checker)),
+            map: BlendMap { entries },
+        })
+    }
+
+    /// `{ [value texture {...}] ... }` after `texture_map`, or a texture map identifier.
+    fn texture_map_body(&mut self) -> Result<BlendMap<Texture>> {
+        let open = self.next()?;
+        if open.kind != L_BRACE {
+            return match open.slot.as_ref().map(|s| s.borrow().clone()) {
+                Some(Value::TextureMap(map)) => Ok(BlendMap::clone(&map)),
+                _ => Err(self.error_at(
+                    &open,
+                    format!(
+                        "expected '{{' or a texture_map identifier, found {}",
+                        self.describe(&open)
+                    ),
+                )),
+            };
+        }
+        let mut entries = Vec::new();
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => break,
+                L_BRACK => {
+                    let value = self.float()?;
+                    self.eat(COMMA)?;
+                    let inner = self.next()?;
+                    let texture = match inner.kind {
+                        TEXTURE_KW => {
+                            let mut texture = self.texture_body()?;
+                            while self.eat(TEXTURE_KW)? {
+                                let top = self.texture_body()?;
+                                texture = super::object::layer(texture, top);
+                            }
+                            texture
+                        }
+                        _ => match inner.slot.as_ref().map(|s| s.borrow().clone()) {
+                            Some(Value::Texture(t)) => Texture::clone(&t),
+                            _ => {
+                                return Err(self.error_at(
+                                    &inner,
+                                    format!(
+                                        "expected a texture in texture_map, found {}",
+                                        self.describe(&inner)
+                                    ),
+                                ));
+                            }
+                        },
+                    };
+                    entries.push((value, texture));
+                    self.expect(R_BRACK, "']'")?;
+                }
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected '[' or '}}' in texture_map, found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+        if entries.is_empty() {
+            return Err(self.error_at(&open, "a texture_map needs at least one entry"));
+        }
+        Ok(BlendMap { entries })
     }
 
     /// `{ ... }` after `pigment`, starting from a fresh black pigment.
@@ -287,6 +438,10 @@ impl Evaluator<'_> {
         };
         let mut pattern = Pattern::new(kind);
         pattern.noise_generator = self.settings.noise_generator;
+        // Marble and wood run their maps forth and back unless told otherwise.
+        if matches!(keyword.kind, MARBLE_KW | WOOD_KW) {
+            pattern.wave = WaveType::Triangle;
+        }
         Ok(pattern)
     }
 
@@ -652,7 +807,7 @@ impl Evaluator<'_> {
     }
 
     /// Whether a float expression starts at the next token.
-    fn value_follows(&mut self) -> Result<bool> {
+    pub fn value_follows(&mut self) -> Result<bool> {
         let token = self.next()?;
         let starts = matches!(token.kind, NUMBER | L_PAREN | MINUS | PLUS)
             || (token.kind == IDENT
@@ -713,12 +868,37 @@ impl Evaluator<'_> {
                     finish.reflection.get_or_insert_with(no_reflection).exponent = exponent;
                 }
                 CONSERVE_ENERGY_KW => finish.conserve_energy = self.optional_bool()?,
-                IRID_KW | SUBSURFACE_KW => return Err(self.unsupported(&token, self.text(&token))),
+                IRID_KW => finish.irid = Some(self.irid()?),
+                SUBSURFACE_KW => return Err(self.unsupported(&token, "subsurface")),
                 _ => {
                     return Err(self.error_at(
                         &token,
                         format!(
                             "expected a finish item or '}}', found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+
+    /// `{ amount [thickness T] [turbulence T] }` after `irid`.
+    fn irid(&mut self) -> Result<(f64, f64, f64)> {
+        self.expect(L_BRACE, "'{'")?;
+        let amount = self.float()?;
+        let (mut thickness, mut turbulence) = (0.0, 0.0);
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => return Ok((amount, thickness, turbulence)),
+                THICKNESS_KW => thickness = self.float()?,
+                TURBULENCE_KW => turbulence = self.float()?,
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected thickness, turbulence or '}}' in irid, found {}",
                             self.describe(&token)
                         ),
                     ));

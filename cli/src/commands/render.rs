@@ -51,6 +51,9 @@ pub fn run(args: &RenderArgs) -> Outcome {
     let rendered = match renderer::pipeline::render_source(name, &files, &options) {
         Ok(rendered) => rendered,
         Err(failure) => {
+            for message in &failure.messages {
+                eprint!("{}", message.text);
+            }
             eprint!("{}", failure.to_human());
             return Outcome::SceneErrors;
         }
