@@ -74,6 +74,11 @@ impl SourceFile {
         SourceFile(node)
     }
 
+    /// The top-level items: directives, blocks, expressions (such as macro calls).
+    pub fn items(&self) -> impl Iterator<Item = SyntaxNode> + use<> {
+        self.0.children()
+    }
+
     /// Every comment in the file, in order.
     pub fn comments(&self) -> impl Iterator<Item = Comment> + use<> {
         self.0
@@ -570,6 +575,7 @@ mod tests {
         let call = file.syntax().descendants().find_map(Call::cast).unwrap();
         assert_eq!(call.name_ref().and_then(|n| n.text()).as_deref(), Some("M"));
         assert_eq!(call.arg_list().unwrap().args().count(), 2);
+        assert_eq!(file.items().count(), 5);
         let comments: Vec<_> = file.comments().map(|c| c.content().to_string()).collect();
         assert_eq!(comments, [" a comment"]);
     }
