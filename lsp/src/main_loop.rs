@@ -340,10 +340,10 @@ impl MainLoop {
 
     /// Gives the project its new file list and rebuilds what snapshots share.
     fn flush(&mut self) {
-        if self.files_changed {
-            self.project.set_files(&mut self.db).to(self.files.clone());
-            self.files_changed = false;
+        if self.dirty {
+            self.load_includes();
         }
+        self.set_project_files();
         if !self.dirty {
             return;
         }
@@ -368,6 +368,44 @@ impl MainLoop {
             project: self.project,
             bundled: self.bundled.clone(),
         });
+    }
+
+    fn set_project_files(&mut self) {
+        if self.files_changed {
+            self.project.set_files(&mut self.db).to(self.files.clone());
+            self.files_changed = false;
+        }
+    }
+
+    /// Loads the disk files that open documents include, directly or through other
+    /// includes, before any request can ask about them. Each round loads the includes the
+    /// previous round made reachable.
+    fn load_includes(&mut self) {
+        let parts: Vec<File> = self
+            .parts
+            .values()
+            .flatten()
+            .map(|part| part.file)
+            .collect();
+        loop {
+            self.set_project_files();
+            let mut unloaded: Vec<PathBuf> = parts
+                .iter()
+                .flat_map(|&file| db::unloaded_includes(&self.db, file))
+                .collect();
+            unloaded.sort();
+            unloaded.dedup();
+            let mut loaded = false;
+            for path in unloaded {
+                if let Ok(text) = std::fs::read_to_string(&path) {
+                    self.set_file(FilePath::Disk(path), &text);
+                    loaded = true;
+                }
+            }
+            if !loaded {
+                return;
+            }
+        }
     }
 
     fn snapshot(&self) -> Snapshot {
@@ -411,7 +449,6 @@ fn publish_diagnostics(snapshot: Snapshot, generation: u64, publisher: &Publishe
                 let checked = db::check_file(&snapshot.db, part.file);
                 diagnostics.extend(convert::diagnostics(&snapshot, part, checked));
                 unloaded.extend(checked.unloaded.iter().cloned());
-                unloaded.extend(db::unloaded_includes(&snapshot.db, part.file));
             }
             (diagnostics, unloaded)
         }));

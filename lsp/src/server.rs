@@ -150,6 +150,50 @@ impl LanguageServer for Server {
         self.main_loop.send(Event::DiskChanged(params.changes));
     }
 
+    async fn hover(&self, params: HoverParams) -> Result<Option<Hover>> {
+        self.run(params, handlers::hover::handle).await
+    }
+
+    async fn goto_definition(
+        &self,
+        params: GotoDefinitionParams,
+    ) -> Result<Option<GotoDefinitionResponse>> {
+        self.run(params, handlers::goto_definition::handle).await
+    }
+
+    async fn references(&self, params: ReferenceParams) -> Result<Option<Vec<Location>>> {
+        self.run(params, handlers::references::handle).await
+    }
+
+    async fn prepare_rename(
+        &self,
+        params: TextDocumentPositionParams,
+    ) -> Result<Option<PrepareRenameResponse>> {
+        self.run(params, handlers::rename::prepare).await
+    }
+
+    async fn rename(&self, params: RenameParams) -> Result<Option<WorkspaceEdit>> {
+        self.run(params, handlers::rename::handle).await
+    }
+
+    async fn document_symbol(
+        &self,
+        params: DocumentSymbolParams,
+    ) -> Result<Option<DocumentSymbolResponse>> {
+        self.run(params, handlers::document_symbols::handle).await
+    }
+
+    async fn symbol(
+        &self,
+        params: WorkspaceSymbolParams,
+    ) -> Result<Option<WorkspaceSymbolResponse>> {
+        self.run(params, handlers::workspace_symbols::handle).await
+    }
+
+    async fn document_link(&self, params: DocumentLinkParams) -> Result<Option<Vec<DocumentLink>>> {
+        self.run(params, handlers::document_links::handle).await
+    }
+
     async fn did_change_configuration(&self, params: DidChangeConfigurationParams) {
         if let Some(settings) = Settings::from_value(Some(params.settings)) {
             self.main_loop.send(Event::Configure {

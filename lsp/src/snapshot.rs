@@ -5,7 +5,7 @@
 use crate::bundled::BundledFiles;
 use crate::convert;
 use crate::documents::{DocumentKind, DocumentView, Part};
-use analysis::db::{self, FilePath, Project, RootDatabase};
+use analysis::db::{self, File, FilePath, Project, RootDatabase};
 use std::collections::HashMap;
 use std::sync::Arc;
 use syntax::line_index::LineIndex;
@@ -66,6 +66,17 @@ impl Snapshot {
             None => range,
         };
         convert::range(&view.line_index, &view.text, range)
+    }
+
+    /// Where a range of a database file is, for the protocol.
+    pub fn file_location(&self, file: File, range: TextRange) -> Option<Location> {
+        self.location(file.path(&self.db), range)
+    }
+
+    /// The URI of a file, as [`Snapshot::location`] finds it.
+    pub fn uri(&self, path: &FilePath) -> Option<Uri> {
+        self.location(path, TextRange::default())
+            .map(|location| location.uri)
     }
 
     /// Where a range of a file is, for the protocol: open documents by their URI (blocks

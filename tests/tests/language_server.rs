@@ -130,3 +130,127 @@ fn a_panicking_request_is_answered_with_an_error_and_the_server_goes_on() {
     assert!(server.is_running());
     assert_eq!(server.stop(), Some(0));
 }
+
+fn at(uri: &str, line: u32, character: u32) -> Value {
+    json!({"textDocument": {"uri": uri}, "position": {"line": line, "character": character}})
+}
+
+#[test]
+fn navigation_requests_answer_in_scenes_and_typst_blocks() {
+    let dir = scene_dir(&[("lib.inc", "// The ball's size.\n#declare Size = 2;\n")]);
+    let (mut server, _) = LspProcess::start(dir.path(), Value::Null);
+    let scene = uri(dir.path()) + "/scene.pov";
+    let lib = uri(dir.path()) + "/lib.inc";
+    server.open(
+        &scene,
+        "povray",
+        1,
+        "#version 3.7;\n#include \"lib.inc\"\nsphere { 0, Size }\n",
+    );
+    server.diagnostics(&scene, Some(1));
+
+    let hover = server
+        .request("textDocument/hover", at(&scene, 2, 13))
+        .unwrap();
+    assert_eq!(
+        hover["contents"]["value"].as_str().unwrap().lines().nth(1),
+        Some("#declare Size = 2; // float 2")
+    );
+    let definition = server
+        .request("textDocument/definition", at(&scene, 2, 13))
+        .unwrap();
+    assert_eq!(definition[0]["uri"], lib.as_str());
+    assert_eq!(
+        definition[0]["range"]["start"],
+        json!({"line": 1, "character": 9})
+    );
+
+    let mut params = at(&scene, 2, 13);
+    params["context"] = json!({"includeDeclaration": true});
+    let references = server.request("textDocument/references", params).unwrap();
+    let places: Vec<(String, i64)> = references
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| {
+            (
+                r["uri"]
+                    .as_str()
+                    .unwrap()
+                    .rsplit('/')
+                    .next()
+                    .unwrap()
+                    .to_owned(),
+                r["range"]["start"]["line"].as_i64().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        places,
+        [("lib.inc".to_owned(), 1), ("scene.pov".to_owned(), 2)]
+    );
+
+    let mut params = at(&scene, 2, 13);
+    params["newName"] = json!("Radius");
+    let edit = server.request("textDocument/rename", params).unwrap();
+    assert_eq!(edit["changes"][&scene][0]["newText"], "Radius");
+    assert_eq!(
+        edit["changes"][&lib][0]["range"]["start"],
+        json!({"line": 1, "character": 9})
+    );
+    let refused = server
+        .request("textDocument/prepareRename", at(&scene, 2, 1))
+        .unwrap_err();
+    assert_eq!(refused.message, "reserved words cannot be renamed");
+
+    let links = server
+        .request(
+            "textDocument/documentLink",
+            json!({"textDocument": {"uri": scene}}),
+        )
+        .unwrap();
+    assert_eq!(links[0]["target"], lib.as_str());
+
+    // A Typst document: features inside its povray block, positions in the document.
+    let doc = uri(dir.path()) + "/doc.typ";
+    let typst = "= Scenes\n#render(read(\"scene.pov\"))\n\n  ```povray\n  #declare R = 1;\n  sphere { 0, R }\n  ```\n";
+    server.open(&doc, "typst", 1, typst);
+    let definition = server
+        .request("textDocument/definition", at(&doc, 5, 14))
+        .unwrap();
+    assert_eq!(definition[0]["uri"], doc.as_str());
+    assert_eq!(
+        definition[0]["range"]["start"],
+        json!({"line": 4, "character": 11})
+    );
+    let symbols = server
+        .request(
+            "textDocument/documentSymbol",
+            json!({"textDocument": {"uri": doc}}),
+        )
+        .unwrap();
+    assert_eq!(symbols[0]["name"], "R");
+    assert_eq!(
+        symbols[0]["selectionRange"]["start"],
+        json!({"line": 4, "character": 11})
+    );
+    let links = server
+        .request(
+            "textDocument/documentLink",
+            json!({"textDocument": {"uri": doc}}),
+        )
+        .unwrap();
+    assert_eq!(links[0]["target"], scene.as_str());
+    assert_eq!(
+        server
+            .request("textDocument/hover", at(&doc, 0, 3))
+            .unwrap(),
+        Value::Null
+    );
+
+    let found = server
+        .request("workspace/symbol", json!({"query": "Size"}))
+        .unwrap();
+    assert_eq!(found[0]["name"], "Size");
+    assert_eq!(server.stop(), Some(0));
+}

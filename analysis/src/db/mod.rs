@@ -13,6 +13,7 @@ mod diagnostics;
 mod files;
 mod include_graph;
 mod inputs;
+mod resolve;
 mod symbols;
 mod tree;
 
@@ -23,6 +24,7 @@ pub use include_graph::{
     Definition, IncludeTarget, include_scope, include_targets, includes, unloaded_includes,
 };
 pub use inputs::{File, FilePath, Project};
+pub use resolve::{identifiers, name_index, resolve_file};
 pub use symbols::{
     Constant, MacroParam, Symbol, SymbolKind, ValueKind, doc_comment, file_symbols, fold,
     name_ranges,
@@ -74,6 +76,7 @@ impl RootDatabase {
             .ingredient::<include_graph::includes>()
             .ingredient::<include_graph::include_targets>()
             .ingredient::<include_graph::include_scope>()
+            .ingredient::<resolve::resolve_file>()
             .ingredient::<diagnostics::check_file>()
             .build();
         RootDatabase { storage }

@@ -1,7 +1,14 @@
 //! One handler per request: each takes a snapshot and the protocol's parameters, asks an
 //! IDE feature, and converts its plain answer with [`crate::convert`].
 
+pub mod document_links;
+pub mod document_symbols;
+pub mod goto_definition;
+pub mod hover;
+pub mod references;
+pub mod rename;
 pub mod render;
+pub mod workspace_symbols;
 
 use tower_lsp_server::ls_types::*;
 
@@ -15,6 +22,19 @@ pub fn capabilities() -> ServerCapabilities {
                 ..TextDocumentSyncOptions::default()
             },
         )),
+        hover_provider: Some(HoverProviderCapability::Simple(true)),
+        definition_provider: Some(OneOf::Left(true)),
+        references_provider: Some(OneOf::Left(true)),
+        rename_provider: Some(OneOf::Right(RenameOptions {
+            prepare_provider: Some(true),
+            work_done_progress_options: WorkDoneProgressOptions::default(),
+        })),
+        document_symbol_provider: Some(OneOf::Left(true)),
+        workspace_symbol_provider: Some(OneOf::Left(true)),
+        document_link_provider: Some(DocumentLinkOptions {
+            resolve_provider: Some(false),
+            work_done_progress_options: WorkDoneProgressOptions::default(),
+        }),
         ..ServerCapabilities::default()
     }
 }

@@ -1,0 +1,156 @@
+//! Name resolution: what each identifier of a file names. SDL resolves names when the
+//! scene runs, so this follows the shape of a typical scene: a macro's parameters and
+//! `#local`s first, then the file's own definitions (the last one before the use, or the
+//! first after it), then what the file's includes define.
+
+use super::{Db, Definition, File, SymbolKind, file_symbols, include_scope, name_ranges};
+use std::collections::HashMap;
+use syntax::SyntaxKind::*;
+use syntax::{SyntaxNode, SyntaxToken};
+
+/// For each identifier of `file` (its `IDENT` tokens in text order, defining names
+/// included), the definition it names, if one is in sight. Dictionary keys (`D.key`) name
+/// nothing.
+///
+/// Position-free: an edit that changes no resolution leaves it equal, so references in
+/// other files that depend on it are reused.
+#[salsa::tracked(returns(ref))]
+pub fn resolve_file(db: &dyn Db, file: File) -> Vec<Option<Definition>> {
+    let root = super::parse(db, file).syntax_node();
+    let resolver = Resolver::new(db, file);
+    identifiers(&root)
+        .map(|token| resolver.resolve(&token))
+        .collect()
+}
+
+/// The identifier tokens of a tree, in the order [`resolve_file`] numbers them.
+pub fn identifiers(root: &SyntaxNode) -> impl Iterator<Item = SyntaxToken> + use<> {
+    root.descendants_with_tokens()
+        .filter_map(|element| element.into_token())
+        .filter(|token| token.kind() == IDENT)
+}
+
+struct Resolver<'db> {
+    db: &'db dyn Db,
+    file: File,
+    /// Symbol indices by the number of their defining name.
+    by_name_index: HashMap<u32, u32>,
+}
+
+impl<'db> Resolver<'db> {
+    fn new(db: &'db dyn Db, file: File) -> Self {
+        let by_name_index = file_symbols(db, file)
+            .iter()
+            .enumerate()
+            .map(|(index, symbol)| (symbol.name_index, index as u32))
+            .collect();
+        Resolver {
+            db,
+            file,
+            by_name_index,
+        }
+    }
+
+    fn definition(&self, symbol: u32) -> Definition {
+        Definition {
+            file: self.file,
+            symbol,
+        }
+    }
+
+    fn resolve(&self, token: &SyntaxToken) -> Option<Definition> {
+        let parent = token.parent()?;
+        if parent.kind() == NAME {
+            let index = name_index(self.db, self.file, token)?;
+            return self.by_name_index.get(&index).map(|&s| self.definition(s));
+        }
+        if is_dictionary_key(token) {
+            return None;
+        }
+        let name = token.text();
+        let offset = token.text_range().start();
+        let symbols = file_symbols(self.db, self.file);
+        let ranges = name_ranges(self.db, self.file);
+        let defined_at = |index: usize| ranges[symbols[index].name_index as usize].start();
+
+        // Inside macros, innermost first: parameters, then the macro's own #locals.
+        for container in self.containers(token) {
+            let mut locals = symbols
+                .iter()
+                .enumerate()
+                .filter(|(_, s)| s.name == name && s.container == Some(container));
+            if let Some((index, _)) = locals
+                .clone()
+                .find(|(_, s)| s.kind == SymbolKind::Parameter)
+            {
+                return Some(self.definition(index as u32));
+            }
+            let before = locals
+                .clone()
+                .rfind(|(i, _)| defined_at(*i) < offset)
+                .or_else(|| locals.next());
+            if let Some((index, symbol)) = before
+                && symbol.local
+            {
+                return Some(self.definition(index as u32));
+            }
+        }
+
+        // The file's own definitions that are visible everywhere in it.
+        let visible = symbols.iter().enumerate().filter(|(_, s)| {
+            s.name == name && s.kind != SymbolKind::Parameter && (s.container.is_none() || !s.local)
+        });
+        let chosen = visible
+            .clone()
+            .rfind(|(i, _)| defined_at(*i) < offset)
+            .or_else(|| visible.clone().next());
+        if let Some((index, _)) = chosen {
+            return Some(self.definition(index as u32));
+        }
+        include_scope(self.db, self.file).get(name).copied()
+    }
+
+    /// The symbol indices of the macros around a token, innermost first.
+    fn containers(&self, token: &SyntaxToken) -> Vec<u32> {
+        let symbols = file_symbols(self.db, self.file);
+        token
+            .parent_ancestors()
+            .filter(|node| node.kind() == MACRO)
+            .filter_map(|node| {
+                let name = node.children().find(|c| c.kind() == NAME)?;
+                let ident = name
+                    .children_with_tokens()
+                    .filter_map(|e| e.into_token())
+                    .find(|t| t.kind() == IDENT)?;
+                let index = name_index(self.db, self.file, &ident)?;
+                symbols
+                    .iter()
+                    .position(|s| s.name_index == index)
+                    .map(|i| i as u32)
+            })
+            .collect()
+    }
+}
+
+/// The number of the `NAME` node that holds an identifier, as [`super::Symbol::name_index`]
+/// counts them.
+pub fn name_index(db: &dyn Db, file: File, token: &SyntaxToken) -> Option<u32> {
+    let ranges = name_ranges(db, file);
+    let range = token.text_range();
+    ranges
+        .binary_search_by(|r| r.start().cmp(&range.start()))
+        .ok()
+        .map(|i| i as u32)
+}
+
+/// `key` in `Dict.key`: a member, not a name.
+fn is_dictionary_key(token: &SyntaxToken) -> bool {
+    let mut previous = token.prev_token();
+    while let Some(t) = &previous {
+        if !t.kind().is_trivia() {
+            break;
+        }
+        previous = t.prev_token();
+    }
+    previous.is_some_and(|t| t.kind() == DOT)
+}

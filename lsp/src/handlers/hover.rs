@@ -1,0 +1,27 @@
+//! `textDocument/hover`.
+
+use crate::snapshot::Snapshot;
+use analysis::ide::FilePosition;
+use analysis::ide::hover::{HoverConfig, hover};
+use tower_lsp_server::jsonrpc::Result;
+use tower_lsp_server::ls_types::{Hover, HoverContents, HoverParams, MarkupContent, MarkupKind};
+
+pub fn handle(snapshot: Snapshot, params: HoverParams) -> Result<Option<Hover>> {
+    let at = &params.text_document_position_params;
+    let Some((part, offset)) = snapshot.file_position(&at.text_document.uri, at.position) else {
+        return Ok(None);
+    };
+    let position = FilePosition {
+        file: part.file,
+        offset,
+    };
+    Ok(
+        hover(&snapshot.db, position, &HoverConfig::default()).map(|result| Hover {
+            contents: HoverContents::Markup(MarkupContent {
+                kind: MarkupKind::Markdown,
+                value: result.markup,
+            }),
+            range: Some(snapshot.part_range(part, result.range)),
+        }),
+    )
+}
