@@ -27,7 +27,6 @@ pub fn check(pattern: &Pattern) -> Result<(), String> {
         PatternKind::Cells => Some("the cells pattern"),
         PatternKind::Crackle { .. } => Some("the crackle pattern"),
         PatternKind::Facets { .. } => Some("the facets pattern"),
-        PatternKind::Function(_) => Some("function patterns"),
         PatternKind::Hexagon => Some("the hexagon pattern"),
         PatternKind::Ripples => Some("the ripples pattern"),
         PatternKind::Waves => Some("the waves pattern"),
@@ -41,6 +40,14 @@ pub fn check(pattern: &Pattern) -> Result<(), String> {
     };
     if let Some(what) = unsupported {
         return Err(format!("not supported yet: {what}"));
+    }
+    if let PatternKind::Function(f) = &pattern.kind
+        && let Some(missing) = f.unsupported()
+    {
+        return Err(format!(
+            "not supported yet: {}",
+            missing.trim_start_matches("not supported yet: ")
+        ));
     }
     for warp in &pattern.warps {
         match warp {
@@ -213,6 +220,7 @@ fn blend_value(kind: &PatternKind, p: DVec3) -> f64 {
             }
             sum * 0.5
         }
+        PatternKind::Function(f) => f.eval(&[p.x, p.y, p.z]),
         _ => 0.0,
     }
 }

@@ -122,7 +122,6 @@ define_kinds! {
     ASSUMED_GAMMA_KW => "assumed_gamma",
     ATAN_KW => "atan",
     ATAN2_KW => "atan2",
-    ATAND_KW => "atand",
     ATANH_KW => "atanh",
     AUTOSTOP_KW => "autostop",
     AVERAGE_KW => "average",

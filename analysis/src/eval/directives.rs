@@ -168,7 +168,7 @@ impl Evaluator<'_> {
             // outer identifier of the same name.
             self.declare_local(&text, Value::Uninitialized);
         }
-        let first = self.next()?;
+        let first = self.guarded(Self::next)?;
         self.unget(first.clone());
         let value = self.rvalue()?;
         let needs_semicolon = value.is_numeric();
@@ -281,7 +281,9 @@ impl Evaluator<'_> {
 
     /// The right-hand side of a declaration or a macro argument: a value of any type.
     pub fn rvalue(&mut self) -> Result<Value> {
-        let token = self.next()?;
+        // Reading an array identifier looks at the token after it (for a subscript), which
+        // must not run a following #declare early.
+        let token = self.guarded(Self::next)?;
         let kind = token.kind;
         self.unget(token.clone());
         if Self::starts_object(kind) {
@@ -481,10 +483,8 @@ impl Evaluator<'_> {
                 values.push(self.rvalue()?);
             }
             count += 1;
-            if !self.eat(COMMA)? {
-                self.expect(R_BRACE, "'}' or ','")?;
-                break;
-            }
+            // Commas between the items are optional, as in all of POV-Ray's lists.
+            self.eat(COMMA)?;
         }
         if count == 0 {
             return Err(self.error_at(open, "empty array initializer"));

@@ -116,38 +116,12 @@ impl Evaluator<'_> {
     pub fn string(&mut self) -> Result<String> {
         let first = self.next()?;
         let value = match first.kind {
-            IDENT
-                if first.slot.as_ref().is_some_and(|s| {
-                    !matches!(&*s.borrow(), Value::Array(_) | Value::Dictionary(_))
-                }) =>
-            {
-                first
-                    .slot
-                    .as_ref()
-                    .map(|s| s.borrow().clone())
-                    .unwrap_or(Value::Float(0.0))
-            }
-            // One subscript, and no looking past it: `#debug A[I]` inside a loop must
-            // print before the loop's #end runs.
-            IDENT => {
-                let value = first
-                    .slot
-                    .as_ref()
-                    .map(|s| s.borrow().clone())
-                    .unwrap_or(Value::Float(0.0));
-                let open = self.next()?;
-                match open.kind {
-                    L_BRACK => self.subscript(&open, value)?,
-                    DOT if matches!(value, Value::Dictionary(_)) => {
-                        let item = self.next()?;
-                        self.dot_item(&item, value)?
-                    }
-                    _ => {
-                        self.unget(open);
-                        value
-                    }
-                }
-            }
+            // The token getter has already resolved `Array[i]`; nothing past the
+            // identifier is read, so `#debug S` inside a loop prints before its #end runs.
+            IDENT => match &first.slot {
+                Some(slot) => slot.borrow().clone(),
+                None => return Err(self.undeclared(&first)),
+            },
             L_PAREN => {
                 self.unget(first.clone());
                 self.postfix()?
@@ -400,7 +374,7 @@ impl Evaluator<'_> {
         }
     }
 
-    fn dot_item(&mut self, item: &Token, value: Value) -> Result<Value> {
+    pub fn dot_item(&mut self, item: &Token, value: Value) -> Result<Value> {
         if let Value::Dictionary(dict) = &value {
             let key = self.text(item).to_owned();
             return dict.get(&key).cloned().ok_or_else(|| {
@@ -455,7 +429,7 @@ impl Evaluator<'_> {
     }
 
     /// `Array[i]...` or `Dict["key"]`, after the `[`.
-    fn subscript(&mut self, open: &Token, value: Value) -> Result<Value> {
+    pub fn subscript(&mut self, open: &Token, value: Value) -> Result<Value> {
         match value {
             Value::Dictionary(dict) => {
                 let key = self.string()?;
@@ -555,27 +529,17 @@ impl Evaluator<'_> {
         let mut components = Vec::with_capacity(5);
         loop {
             let at = self.next()?;
+            if at.kind == GT && !components.is_empty() {
+                break;
+            }
             self.unget(at.clone());
             let value = self.additive()?;
             components.push(self.to_float(&at, value)?);
-            let token = self.next()?;
-            match token.kind {
-                // POV-Ray accepts a trailing comma: `<1, 2, 3,>`.
-                COMMA if self.peek_kind()? == GT => {
-                    self.next()?;
-                    break;
-                }
-                COMMA => continue,
-                GT => break,
-                _ => {
-                    return Err(self.error_at(
-                        &token,
-                        format!(
-                            "expected ',' or '>' in vector, found {}",
-                            self.describe(&token)
-                        ),
-                    ));
-                }
+            // Commas are optional (`<1 0 -1>` is three components to POV-Ray, and `<1,2,>`
+            // two); a component runs as far as an expression can.
+            self.eat(COMMA)?;
+            if components.len() > 5 {
+                break;
             }
         }
         if !(2..=5).contains(&components.len()) {

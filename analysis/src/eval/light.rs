@@ -111,11 +111,9 @@ impl Evaluator<'_> {
                     } else {
                         self.optional_bool()?
                     };
+                    // Without an area light these change nothing, as in POV-Ray.
                     let Some(area) = &mut light.area else {
-                        return Err(self.error_at(
-                            &token,
-                            format!("'{}' needs an area_light before it", self.text(&token)),
-                        ));
+                        continue;
                     };
                     match token.kind {
                         ADAPTIVE_KW => area.adaptive = adaptive,

@@ -61,16 +61,49 @@ impl Evaluator<'_> {
                             continue;
                         }
                     }
-                    return Ok(Token { slot, ..raw });
+                    let token = Token { slot, ..raw };
+                    return self.resolve_element(token);
                 }
                 _ => return Ok(raw),
             }
         }
     }
 
-    /// Whether a declaration's value is being read in the current frame.
+    /// Whether a declaration's value is being read and the reader has got past its end:
+    /// back in the frame where the value started, or in one that frame returned to. Macros
+    /// called inside the value run deeper and may declare what they like.
     fn declaration_pending(&self) -> bool {
-        self.declaring.last() == Some(&self.frames.len())
+        self.declaring
+            .last()
+            .is_some_and(|&depth| self.frames.len() <= depth)
+    }
+
+    /// An identifier naming an array or dictionary followed by `[` (or a dictionary by
+    /// `.key`) stands for the element: every statement that takes an identifier also takes
+    /// `Array[i]`, as in POV-Ray. The token keeps the identifier's place.
+    fn resolve_element(&mut self, token: Token) -> Result<Token> {
+        let value = match &token.slot {
+            Some(slot) if matches!(&*slot.borrow(), Value::Array(_) | Value::Dictionary(_)) => {
+                slot.borrow().clone()
+            }
+            _ => return Ok(token),
+        };
+        let open = self.next()?;
+        let element = match open.kind {
+            L_BRACK => self.subscript(&open, value)?,
+            DOT if matches!(value, Value::Dictionary(_)) => {
+                let item = self.next_raw()?;
+                self.dot_item(&item, value)?
+            }
+            _ => {
+                self.unget(open);
+                return Ok(token);
+            }
+        };
+        Ok(Token {
+            slot: Some(std::rc::Rc::new(std::cell::RefCell::new(element))),
+            ..token
+        })
     }
 
     /// Gives a token back; the next `next()` returns it again.

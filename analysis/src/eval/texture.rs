@@ -42,11 +42,12 @@ impl Evaluator<'_> {
             match token.kind {
                 R_BRACE => return Ok(texture),
                 PIGMENT_KW | NORMAL_KW | FINISH_KW => {
+                    // On a layered texture they change the top layer.
                     let Texture::Plain {
                         pigment,
                         normal,
                         finish,
-                    } = &mut texture
+                    } = top_layer(&mut texture)
                     else {
                         return Err(self.error_at(
                             &token,
@@ -430,6 +431,10 @@ impl Evaluator<'_> {
             MANDEL_KW | JULIA_KW | MAGNET_KW => {
                 PatternKind::Fractal(Box::new(self.fractal(keyword)?))
             }
+            FUNCTION_KW => {
+                self.unget(keyword.clone());
+                PatternKind::Function(Arc::new(self.function_value()?))
+            }
             _ => {
                 return Err(
                     self.unsupported(keyword, &format!("the {} pattern", self.text(keyword)))
@@ -673,7 +678,12 @@ impl Evaluator<'_> {
             match token.kind {
                 R_BRACE => break,
                 L_BRACK => {
-                    let value = self.float()?;
+                    // An average's entries may leave out their weight, which is then 1.
+                    let value = if self.value_follows()? {
+                        self.float()?
+                    } else {
+                        1.0
+                    };
                     self.eat(COMMA)?;
                     let pigment = if self.eat(PIGMENT_KW)? {
                         self.pigment_body()?
@@ -809,12 +819,27 @@ impl Evaluator<'_> {
     /// Whether a float expression starts at the next token.
     pub fn value_follows(&mut self) -> Result<bool> {
         let token = self.next()?;
-        let starts = matches!(token.kind, NUMBER | L_PAREN | MINUS | PLUS)
-            || (token.kind == IDENT
-                && token
-                    .slot
-                    .as_ref()
-                    .is_some_and(|s| matches!(&*s.borrow(), Value::Float(_))));
+        let starts = matches!(
+            token.kind,
+            NUMBER
+                | L_PAREN
+                | MINUS
+                | PLUS
+                | BANG
+                | TRUE_KW
+                | FALSE_KW
+                | ON_KW
+                | OFF_KW
+                | YES_KW
+                | NO_KW
+                | PI_KW
+                | TAU_KW
+                | CLOCK_KW
+        ) || (token.kind == IDENT
+            && token
+                .slot
+                .as_ref()
+                .is_some_and(|s| matches!(&*s.borrow(), Value::Float(_))));
         self.unget(token);
         Ok(starts)
     }
@@ -1025,6 +1050,18 @@ impl Evaluator<'_> {
             }
         }
     }
+}
+
+/// The top layer of a layered texture, or the texture itself.
+fn top_layer(texture: &mut Texture) -> &mut Texture {
+    if matches!(texture, Texture::Layered(layers) if !layers.is_empty()) {
+        let Texture::Layered(layers) = texture else {
+            unreachable!("just matched")
+        };
+        let last = layers.len() - 1;
+        return top_layer(&mut layers[last]);
+    }
+    texture
 }
 
 fn no_reflection() -> Reflection {

@@ -47,7 +47,6 @@ pub(crate) const FUNCTIONS: TokenSet = TokenSet::new(&[
     ASINH_KW,
     ATAN_KW,
     ATAN2_KW,
-    ATAND_KW,
     ATANH_KW,
     BITWISE_AND_KW,
     BITWISE_OR_KW,
