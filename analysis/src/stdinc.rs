@@ -58,6 +58,14 @@ pub fn get(name: &str) -> Option<&'static str> {
         .map(|index| FILES[index].1)
 }
 
+/// The embedded file's name and text; the name is `'static`, for caches keyed by it.
+pub fn get_named(name: &str) -> Option<(&'static str, &'static str)> {
+    FILES
+        .binary_search_by(|(file, _)| (*file).cmp(name))
+        .ok()
+        .map(|index| FILES[index])
+}
+
 /// The names of every embedded include file, in sorted order.
 pub fn names() -> impl Iterator<Item = &'static str> {
     FILES.iter().map(|(name, _)| *name)

@@ -14,7 +14,9 @@ pub type FileId = u32;
 pub struct SourceFile {
     pub name: String,
     pub text: std::sync::Arc<str>,
-    pub tokens: Vec<RawToken>,
+    pub tokens: std::sync::Arc<[RawToken]>,
+    /// A bundled standard include: checked by the test suite, lexed once per process.
+    pub standard: bool,
 }
 
 /// A significant token of a loaded file.
@@ -27,19 +29,49 @@ pub struct RawToken {
 
 impl SourceFile {
     pub fn new(name: String, text: std::sync::Arc<str>) -> SourceFile {
-        let lexed = lexer::lex(&text);
-        let tokens = lexed
-            .tokens
-            .iter()
-            .filter(|t| !t.kind.is_trivia())
-            .map(|t| RawToken {
-                kind: t.kind,
-                start: t.range.start().into(),
-                end: t.range.end().into(),
-            })
-            .collect();
-        SourceFile { name, text, tokens }
+        let tokens = significant_tokens(&text);
+        SourceFile {
+            name,
+            text,
+            tokens,
+            standard: false,
+        }
     }
+
+    /// A bundled standard include, whose tokens are shared by every evaluation in the
+    /// process: scenes include the same few large files over and over.
+    pub fn standard(name: &'static str, text: &'static str) -> SourceFile {
+        static CACHE: std::sync::OnceLock<
+            std::sync::Mutex<std::collections::HashMap<&'static str, std::sync::Arc<[RawToken]>>>,
+        > = std::sync::OnceLock::new();
+        let cache = CACHE.get_or_init(Default::default);
+        let tokens = match cache.lock() {
+            Ok(mut map) => map
+                .entry(name)
+                .or_insert_with(|| significant_tokens(text))
+                .clone(),
+            Err(_) => significant_tokens(text),
+        };
+        SourceFile {
+            name: name.to_owned(),
+            text: std::sync::Arc::from(text),
+            tokens,
+            standard: true,
+        }
+    }
+}
+
+fn significant_tokens(text: &str) -> std::sync::Arc<[RawToken]> {
+    lexer::lex(text)
+        .tokens
+        .iter()
+        .filter(|t| !t.kind.is_trivia())
+        .map(|t| RawToken {
+            kind: t.kind,
+            start: t.range.start().into(),
+            end: t.range.end().into(),
+        })
+        .collect()
 }
 
 /// A token as the statement parsers see it: where it came from, and for identifiers the
