@@ -41,9 +41,8 @@ impl SourceFile {
     /// A bundled standard include, whose tokens are shared by every evaluation in the
     /// process: scenes include the same few large files over and over.
     pub fn standard(name: &'static str, text: &'static str) -> SourceFile {
-        static CACHE: std::sync::OnceLock<
-            std::sync::Mutex<std::collections::HashMap<&'static str, std::sync::Arc<[RawToken]>>>,
-        > = std::sync::OnceLock::new();
+        static CACHE: std::sync::OnceLock<std::sync::Mutex<TokenCache>> =
+            std::sync::OnceLock::new();
         let cache = CACHE.get_or_init(Default::default);
         let tokens = match cache.lock() {
             Ok(mut map) => map
@@ -60,6 +59,9 @@ impl SourceFile {
         }
     }
 }
+
+/// Tokens of the bundled includes by file name.
+type TokenCache = std::collections::HashMap<&'static str, std::sync::Arc<[RawToken]>>;
 
 fn significant_tokens(text: &str) -> std::sync::Arc<[RawToken]> {
     lexer::lex(text)
