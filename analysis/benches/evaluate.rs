@@ -85,7 +85,7 @@ fn corpus() {
         paths.len(),
         start.elapsed().as_secs_f64()
     );
-    timed.sort_by(|a, b| b.0.cmp(&a.0));
+    timed.sort_by_key(|(time, _)| std::cmp::Reverse(*time));
     println!(
         "{:<48} {:>12} {:>16}",
         "slowest scenes", "ours (ms)", "POV-Ray parse (ms)"
