@@ -89,8 +89,9 @@ impl Evaluator<'_> {
             FCLOSE_KW => self.fclose(),
             READ_KW => self.read_directive(),
             WRITE_KW => self.write_directive(),
-            _ if !keyword.kind.is_keyword() && keyword.kind != IDENT => {
-                // POV-Ray ignores a '#' that no directive name follows.
+            _ if !keyword.kind.is_keyword() => {
+                // POV-Ray ignores a '#' that no directive name follows, so `#Macro()`
+                // calls the macro.
                 self.warn_at(&hash, "stray '#' ignored");
                 self.unget(keyword);
                 Ok(())

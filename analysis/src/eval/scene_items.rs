@@ -28,6 +28,14 @@ impl Evaluator<'_> {
                 }
                 GLOBAL_SETTINGS_KW => self.global_settings()?,
                 DEFAULT_KW => self.default_directive()?,
+                // POV-Ray 3.7 still accepts these directives without their '#'.
+                DECLARE_KW | LOCAL_KW | INCLUDE_KW | VERSION_KW => {
+                    self.warn_at(
+                        &token,
+                        format!("legacy syntax: write #{}", self.text(&token)),
+                    );
+                    self.directive(token.clone(), token)?;
+                }
                 BACKGROUND_KW => {
                     self.expect(L_BRACE, "'{'")?;
                     let colour = self.scene_colour()?;

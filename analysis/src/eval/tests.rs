@@ -266,3 +266,18 @@ fn trace_inside_and_extents_ask_the_renderer() {
         &refused.sources,
     ));
 }
+
+#[test]
+fn legacy_forms_still_work() {
+    check_debug(
+        r#"#macro Hello() #debug "hello\n" #end
+#Hello()
+declare A = 2;
+#debug concat(str(A, 0, 0), "\n")
+"#,
+        expect![[r#"
+            hello
+            2
+        "#]],
+    );
+}
