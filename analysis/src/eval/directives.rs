@@ -89,9 +89,25 @@ impl Evaluator<'_> {
             FCLOSE_KW => self.fclose(),
             READ_KW => self.read_directive(),
             WRITE_KW => self.write_directive(),
+            IDENT => {
+                // POV-Ray ignores a '#' before an identifier, so `#Macro()` calls the macro.
+                self.warn_at(&hash, "stray '#' ignored");
+                let name = self.text(&keyword).to_owned();
+                let slot = self.lookup(&name);
+                let definition = match slot.as_ref().map(|s| s.borrow().clone()) {
+                    Some(Value::Macro(definition)) => Some(definition),
+                    _ => None,
+                };
+                match definition {
+                    Some(definition) => self.invoke_macro(definition, &keyword),
+                    None => {
+                        self.unget(Token { slot, ..keyword });
+                        Ok(())
+                    }
+                }
+            }
             _ if !keyword.kind.is_keyword() => {
-                // POV-Ray ignores a '#' that no directive name follows, so `#Macro()`
-                // calls the macro.
+                // POV-Ray ignores a '#' that no directive name follows.
                 self.warn_at(&hash, "stray '#' ignored");
                 self.unget(keyword);
                 Ok(())
