@@ -16,6 +16,9 @@ pub struct Rendered {
     pub warnings: Vec<Diagnostic>,
     /// Every file the scene read, to print the warnings with.
     pub sources: Sources,
+    /// Files the scene wrote with `#fopen`/`#write`, by name; the front end decides where
+    /// (and whether) they reach a disk.
+    pub written: std::collections::BTreeMap<String, String>,
 }
 
 impl Rendered {
@@ -71,6 +74,7 @@ pub fn render_source(
             messages: evaluation.messages,
             warnings: evaluation.diagnostics,
             sources: evaluation.sources,
+            written: evaluation.written,
         }),
         Err(error) => {
             let diagnostic = match error.origin {

@@ -250,3 +250,27 @@ fn syntax_prints_the_tree_and_its_errors() {
     "#]]
     .assert_eq(&stderr(&output));
 }
+
+#[test]
+fn files_a_scene_writes_land_beside_it_and_nowhere_else() {
+    let scene = format!(
+        "#version 3.7;\n#fopen F \"data.txt\" write\n#write (F, \"1, 2\\n\")\n#fclose F\n\
+         #fopen G \"../escape.txt\" write\n#write (G, \"no\")\n#fclose G\n{SPHERE}"
+    );
+    let dir = scene_dir(&[("scene.pov", &scene)]);
+    let output = povrayst(
+        dir.path(),
+        &["render", "scene.pov", "--width", "8", "--height", "8"],
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(
+        std::fs::read_to_string(dir.path().join("data.txt")).unwrap(),
+        "1, 2\n"
+    );
+    assert!(!dir.path().join("../escape.txt").exists());
+    assert!(
+        stderr(&output).contains("not writing '../escape.txt'"),
+        "{}",
+        stderr(&output)
+    );
+}

@@ -61,6 +61,9 @@ pub fn run(args: &RenderArgs) -> Outcome {
     for message in &rendered.messages {
         eprint!("{}", message.text);
     }
+    if let Err(outcome) = keep_written_files(&args.scene, &rendered.written) {
+        return outcome;
+    }
     eprint!("{}", rendered.warnings_to_human());
     let output = args
         .output
@@ -108,4 +111,37 @@ fn write_whole(destination: &Path, bytes: &[u8]) -> std::io::Result<()> {
         let _ = std::fs::remove_file(&temporary);
     }
     renamed
+}
+
+/// Writes the files the scene wrote with `#write` beside the scene, as POV-Ray writes them
+/// relative to where the scene runs. Only plain relative names are allowed, so a scene
+/// cannot write outside its own directory.
+fn keep_written_files(
+    scene: &std::path::Path,
+    written: &std::collections::BTreeMap<String, String>,
+) -> Result<(), Outcome> {
+    let dir = match scene.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() => dir.to_path_buf(),
+        _ => std::path::PathBuf::from("."),
+    };
+    for (name, text) in written {
+        let path = std::path::Path::new(name);
+        let inside = path
+            .components()
+            .all(|c| matches!(c, std::path::Component::Normal(_)));
+        if !inside {
+            eprintln!(
+                "povrayst: not writing '{name}': scenes may only write files inside their own directory"
+            );
+            continue;
+        }
+        if let Err(error) = write_whole(&dir.join(path), text.as_bytes()) {
+            eprintln!(
+                "povrayst: cannot write {}: {error}",
+                dir.join(path).display()
+            );
+            return Err(Outcome::UsageOrIo);
+        }
+    }
+    Ok(())
 }
