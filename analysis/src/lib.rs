@@ -6,6 +6,7 @@
 pub mod db;
 pub mod eval;
 pub mod files;
+pub mod format;
 pub mod function;
 pub mod geometry;
 #[cfg(feature = "ide")]

@@ -4,10 +4,12 @@
 use crate::documents::Part;
 use crate::snapshot::Snapshot;
 use analysis::db::{Checked, FilePath};
+use analysis::ide::diagnostics::{Lint, LintKind};
 use syntax::line_index::{LineCol, LineIndex};
 use syntax::{Severity, TextRange, TextSize};
 use tower_lsp_server::ls_types::{
-    self as lsp, DiagnosticRelatedInformation, DiagnosticSeverity, Location, Position, Range,
+    self as lsp, DiagnosticRelatedInformation, DiagnosticSeverity, DiagnosticTag, Location,
+    Position, Range,
 };
 
 /// The byte offset of a protocol position, clamped to the text.
@@ -123,6 +125,24 @@ pub fn base64(bytes: &[u8]) -> String {
         }
     }
     out
+}
+
+/// Lint findings as hints the editor fades (unused) or strikes through (legacy).
+pub fn lints(snapshot: &Snapshot, part: &Part, lints: Vec<Lint>) -> Vec<lsp::Diagnostic> {
+    lints
+        .into_iter()
+        .map(|lint| lsp::Diagnostic {
+            range: snapshot.part_range(part, lint.range),
+            severity: Some(DiagnosticSeverity::HINT),
+            source: Some("povrayst".to_owned()),
+            message: lint.message,
+            tags: Some(vec![match lint.kind {
+                LintKind::Unused => DiagnosticTag::UNNECESSARY,
+                LintKind::Legacy => DiagnosticTag::DEPRECATED,
+            }]),
+            ..lsp::Diagnostic::default()
+        })
+        .collect()
 }
 
 #[cfg(test)]

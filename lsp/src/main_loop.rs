@@ -11,6 +11,7 @@ use crate::publisher::{Publication, Publisher};
 use crate::snapshot::{Snapshot, World};
 use analysis::EvalOptions;
 use analysis::db::{self, File, FilePath, Project, RootDatabase};
+use analysis::ide::diagnostics::DiagnosticsConfig;
 use analysis::ide::embedded;
 use salsa::Setter;
 use std::collections::{BTreeMap, HashMap};
@@ -448,6 +449,12 @@ fn publish_diagnostics(snapshot: Snapshot, generation: u64, publisher: &Publishe
             for part in &view.parts {
                 let checked = db::check_file(&snapshot.db, part.file);
                 diagnostics.extend(convert::diagnostics(&snapshot, part, checked));
+                let lints = analysis::ide::diagnostics::lints(
+                    &snapshot.db,
+                    part.file,
+                    &DiagnosticsConfig::default(),
+                );
+                diagnostics.extend(convert::lints(&snapshot, part, lints));
                 unloaded.extend(checked.unloaded.iter().cloned());
             }
             (diagnostics, unloaded)

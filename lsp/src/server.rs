@@ -194,6 +194,49 @@ impl LanguageServer for Server {
         self.run(params, handlers::document_links::handle).await
     }
 
+    async fn completion(&self, params: CompletionParams) -> Result<Option<CompletionResponse>> {
+        self.run(params, handlers::completion::handle).await
+    }
+
+    async fn signature_help(&self, params: SignatureHelpParams) -> Result<Option<SignatureHelp>> {
+        self.run(params, handlers::signature_help::handle).await
+    }
+
+    async fn semantic_tokens_full(
+        &self,
+        params: SemanticTokensParams,
+    ) -> Result<Option<SemanticTokensResult>> {
+        self.run(params, handlers::semantic_tokens::handle).await
+    }
+
+    async fn folding_range(&self, params: FoldingRangeParams) -> Result<Option<Vec<FoldingRange>>> {
+        self.run(params, handlers::folding_ranges::handle).await
+    }
+
+    async fn document_color(&self, params: DocumentColorParams) -> Result<Vec<ColorInformation>> {
+        self.run(params, handlers::document_colours::colours).await
+    }
+
+    async fn color_presentation(
+        &self,
+        params: ColorPresentationParams,
+    ) -> Result<Vec<ColorPresentation>> {
+        self.run(params, handlers::document_colours::presentations)
+            .await
+    }
+
+    async fn inlay_hint(&self, params: InlayHintParams) -> Result<Option<Vec<InlayHint>>> {
+        self.run(params, handlers::inlay_hints::handle).await
+    }
+
+    async fn code_action(&self, params: CodeActionParams) -> Result<Option<CodeActionResponse>> {
+        self.run(params, handlers::code_actions::handle).await
+    }
+
+    async fn formatting(&self, params: DocumentFormattingParams) -> Result<Option<Vec<TextEdit>>> {
+        self.run(params, handlers::formatting::handle).await
+    }
+
     async fn did_change_configuration(&self, params: DidChangeConfigurationParams) {
         if let Some(settings) = Settings::from_value(Some(params.settings)) {
             self.main_loop.send(Event::Configure {

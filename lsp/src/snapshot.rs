@@ -51,6 +51,21 @@ impl Snapshot {
         }
     }
 
+    /// The part of an open document that a protocol range falls in, and the range in
+    /// its file.
+    pub fn file_range(&self, uri: &Uri, range: Range) -> Option<(&Part, TextRange)> {
+        let (part, start) = self.file_position(uri, range.start)?;
+        let view = self.document(uri)?;
+        let end = convert::offset(&view.line_index, &view.text, range.end);
+        let end = match &part.block {
+            Some(block) => block
+                .from_host(end)
+                .unwrap_or(TextSize::of(block.text.as_str())),
+            None => end,
+        };
+        Some((part, TextRange::new(start, end.max(start))))
+    }
+
     /// A range of a part's file as a protocol range in its document.
     pub fn part_range(&self, part: &Part, range: TextRange) -> Range {
         let Some(view) = self

@@ -12,10 +12,12 @@ fn scene_dir(files: &[(&str, &str)]) -> tempfile::TempDir {
     dir
 }
 
-/// Each diagnostic as `line:column severity message`, one-based as `povrayst check` says.
+/// Each error and warning as `line:column severity message`, one-based as `povrayst check`
+/// says; hints (unused declarations, legacy syntax) are left out.
 fn summary(diagnostics: &[Value]) -> Vec<String> {
     diagnostics
         .iter()
+        .filter(|d| d["severity"].as_i64() != Some(4))
         .map(|d| {
             let severity = match d["severity"].as_i64() {
                 Some(1) => "error",
@@ -252,5 +254,113 @@ fn navigation_requests_answer_in_scenes_and_typst_blocks() {
         .request("workspace/symbol", json!({"query": "Size"}))
         .unwrap();
     assert_eq!(found[0]["name"], "Size");
+    assert_eq!(server.stop(), Some(0));
+}
+
+fn whole(uri: &str) -> Value {
+    json!({"textDocument": {"uri": uri}})
+}
+
+#[test]
+fn editing_aids_answer_over_the_protocol() {
+    let dir = scene_dir(&[]);
+    let (mut server, init) = LspProcess::start(dir.path(), Value::Null);
+    for capability in [
+        "completionProvider",
+        "signatureHelpProvider",
+        "semanticTokensProvider",
+        "foldingRangeProvider",
+        "colorProvider",
+        "inlayHintProvider",
+        "codeActionProvider",
+        "documentFormattingProvider",
+    ] {
+        assert!(!init["capabilities"][capability].is_null(), "{capability}");
+    }
+    let scene = uri(dir.path()) + "/scene.pov";
+    let text = "#version 3.7;\n#declare Unused = 1;\n#macro Ball(Center, Radius)\nsphere { Center, Radius\npigment { rgb <1, 0.5, 0> }\n}\n#end\nobject { Ball(0, 1) }\nspher { 0, 1 }\n";
+    server.open(&scene, "povray", 1, text);
+    let diagnostics = server.diagnostics(&scene, Some(1));
+    let hint = diagnostics.iter().find(|d| d["severity"] == 4).unwrap();
+    assert_eq!(
+        hint["message"],
+        "'Unused' is declared with #declare but never used"
+    );
+    assert_eq!(hint["tags"], json!([1]));
+
+    let completion = server
+        .request("textDocument/completion", at(&scene, 4, 10))
+        .unwrap();
+    let labels: Vec<&str> = completion
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|i| i["label"].as_str().unwrap())
+        .collect();
+    assert!(
+        labels.contains(&"gradient") && labels.contains(&"color_map"),
+        "{labels:?}"
+    );
+    assert!(!labels.contains(&"ambient"), "{labels:?}");
+
+    let help = server
+        .request("textDocument/signatureHelp", at(&scene, 7, 17))
+        .unwrap();
+    assert_eq!(help["signatures"][0]["label"], "Ball(Center, Radius)");
+    assert_eq!(help["activeParameter"], 1);
+
+    let tokens = server
+        .request("textDocument/semanticTokens/full", whole(&scene))
+        .unwrap();
+    assert_eq!(tokens["data"].as_array().unwrap().len() % 5, 0);
+    assert!(tokens["data"].as_array().unwrap().len() > 5 * 20);
+
+    let folds = server
+        .request("textDocument/foldingRange", whole(&scene))
+        .unwrap();
+    assert_eq!(folds[0]["startLine"], 2);
+
+    let colours = server
+        .request("textDocument/documentColor", whole(&scene))
+        .unwrap();
+    assert_eq!(
+        colours[0]["range"]["start"],
+        json!({"line": 4, "character": 10})
+    );
+    let mut params = whole(&scene);
+    params["color"] = json!({"red": 0.0, "green": 0.0, "blue": 1.0, "alpha": 1.0});
+    params["range"] = colours[0]["range"].clone();
+    let presentation = server
+        .request("textDocument/colorPresentation", params)
+        .unwrap();
+    assert_eq!(presentation[0]["label"], "rgb <0, 0, 1>");
+
+    let mut params = whole(&scene);
+    params["range"] =
+        json!({"start": {"line": 0, "character": 0}, "end": {"line": 9, "character": 0}});
+    let hints = server.request("textDocument/inlayHint", params).unwrap();
+    let labels: Vec<&str> = hints
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|h| h["label"].as_str().unwrap())
+        .collect();
+    assert_eq!(labels, ["Center:", "Radius:"]);
+
+    let mut params = whole(&scene);
+    params["range"] =
+        json!({"start": {"line": 8, "character": 2}, "end": {"line": 8, "character": 2}});
+    params["context"] = json!({"diagnostics": []});
+    let actions = server.request("textDocument/codeAction", params).unwrap();
+    assert_eq!(actions[0]["title"], "Replace with `sphere`");
+    assert_eq!(
+        actions[0]["edit"]["changes"][&scene][0]["newText"],
+        "sphere"
+    );
+
+    let mut params = whole(&scene);
+    params["options"] = json!({"tabSize": 2, "insertSpaces": true});
+    let edits = server.request("textDocument/formatting", params).unwrap();
+    assert!(!edits.as_array().unwrap().is_empty());
     assert_eq!(server.stop(), Some(0));
 }

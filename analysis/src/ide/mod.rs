@@ -3,14 +3,23 @@
 //! language server turns that into protocol messages.
 
 pub mod classify;
+pub mod code_actions;
+pub mod completion;
+pub mod diagnostics;
+pub mod document_colours;
 pub mod document_links;
 pub mod document_symbols;
 pub mod embedded;
+pub mod folding_ranges;
+pub mod formatting;
 pub mod goto_definition;
 pub mod hover;
+pub mod inlay_hints;
 pub mod keyword_docs;
 pub mod references;
 pub mod rename;
+pub mod semantic_tokens;
+pub mod signature_help;
 pub mod workspace_symbols;
 
 #[cfg(test)]
