@@ -2,9 +2,18 @@
 //! one module per output format, so that the CLI, the Typst plugin and the language server
 //! all show the same words at the same place.
 
+mod format;
+mod github;
 mod human;
+mod json;
+mod position;
+mod sarif;
 
+pub use format::{Format, render};
+pub use github::render_github;
 pub use human::render_human;
+pub use json::render_json;
+pub use sarif::render_sarif;
 
 use rowan::TextRange;
 use std::collections::HashMap;
@@ -42,6 +51,9 @@ pub struct Related {
 /// One finding about a scene.
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct Diagnostic {
+    /// A stable name for the kind of finding (`unused-declaration`), for machine-readable
+    /// output and for turning a lint off; `None` for errors that have no name of their own.
+    pub code: Option<&'static str>,
     pub severity: Severity,
     pub message: String,
     pub span: Span,
@@ -66,6 +78,7 @@ impl Diagnostic {
         message: impl Into<String>,
     ) -> Self {
         Diagnostic {
+            code: None,
             severity,
             message: message.into(),
             span: Span {
@@ -75,6 +88,11 @@ impl Diagnostic {
             related: Vec::new(),
             notes: Vec::new(),
         }
+    }
+
+    pub fn with_code(mut self, code: &'static str) -> Self {
+        self.code = Some(code);
+        self
     }
 
     pub fn with_note(mut self, note: impl Into<String>) -> Self {
@@ -111,5 +129,50 @@ impl SourceResolver for [(&str, &str)] {
         self.iter()
             .find(|(name, _)| *name == file)
             .map(|(_, text)| *text)
+    }
+}
+
+/// Diagnostics every renderer's snapshot test shows: an error with a related place in
+/// another file and a note, a coded warning at the very start, and one in an unknown file.
+#[cfg(test)]
+mod test_data {
+    use super::{Diagnostic, Span};
+    use rowan::{TextRange, TextSize};
+
+    const SCENE: &str = "camera { }\nsphere { Foo, 1 }\n";
+    const INC: &str = "#declare Fog = 1;\n";
+
+    fn range(text: &str, needle: &str) -> TextRange {
+        let at = text.find(needle).unwrap();
+        TextRange::at(TextSize::new(at as u32), TextSize::of(needle))
+    }
+
+    pub fn sources() -> &'static [(&'static str, &'static str)] {
+        &[("scene.pov", SCENE), ("a.inc", INC)]
+    }
+
+    pub fn diagnostics() -> Vec<Diagnostic> {
+        vec![
+            Diagnostic::error(
+                "scene.pov",
+                range(SCENE, "Foo"),
+                "undeclared identifier 'Foo'",
+            )
+            .with_related(
+                Span {
+                    file: "a.inc".into(),
+                    range: range(INC, "Fog"),
+                },
+                "a similar name is declared here",
+            )
+            .with_note("did you mean 'Fog'?"),
+            Diagnostic::warning(
+                "scene.pov",
+                TextRange::empty(TextSize::new(0)),
+                "the scene has no #version directive",
+            )
+            .with_code("missing-version"),
+            Diagnostic::error("missing.inc", TextRange::default(), "cannot read"),
+        ]
     }
 }
