@@ -11,6 +11,7 @@ pub mod function;
 pub mod geometry;
 #[cfg(feature = "ide")]
 pub mod ide;
+pub mod lint;
 pub mod noise;
 pub mod pattern;
 pub mod scene;

@@ -31,18 +31,28 @@ impl DiskFiles {
     }
 }
 
-impl FileSource for DiskFiles {
-    fn read(&self, name: &str) -> Option<Arc<str>> {
+impl DiskFiles {
+    /// The file on disk that the name `name` stands for, as `read` finds it.
+    pub fn locate(&self, name: &str) -> Option<PathBuf> {
+        self.candidates(name).next()
+    }
+
+    fn candidates<'a>(&'a self, name: &'a str) -> impl Iterator<Item = PathBuf> + 'a {
         let path = Path::new(name);
         // The scene itself, named as on the command line, and absolute include paths; other
         // names are relative to the search path, never to the working directory.
         let direct = path.is_absolute() || path == self.scene;
-        let candidates = direct
+        direct
             .then(|| path.to_path_buf())
             .into_iter()
-            .chain(self.search_path.iter().map(|dir| dir.join(path)));
-        candidates
+            .chain(self.search_path.iter().map(move |dir| dir.join(path)))
             .filter(|candidate| candidate.is_file())
+    }
+}
+
+impl FileSource for DiskFiles {
+    fn read(&self, name: &str) -> Option<Arc<str>> {
+        self.candidates(name)
             .find_map(|candidate| std::fs::read_to_string(candidate).ok())
             .map(Arc::from)
     }
@@ -86,6 +96,8 @@ mod tests {
         assert_eq!(files.read("a.inc").as_deref(), Some("// scene dir"));
         assert_eq!(files.read("b.inc").as_deref(), Some("// library b"));
         assert_eq!(files.read("c.inc"), None);
+        assert_eq!(files.locate("b.inc"), Some(library.path().join("b.inc")));
+        assert_eq!(files.locate("c.inc"), None);
         // Tests run in the crate's directory, which has a Cargo.toml; it is not on the path.
         assert!(Path::new("Cargo.toml").exists());
         assert_eq!(files.read("Cargo.toml"), None);

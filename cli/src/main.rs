@@ -5,6 +5,7 @@
 mod commands;
 mod disk_files;
 mod render_flags;
+mod scene_paths;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -24,7 +25,7 @@ struct Cli {
 enum Command {
     /// Render a scene to a PNG file.
     Render(commands::render::RenderArgs),
-    /// Report a scene's errors and warnings, gcc-style, on stderr.
+    /// Report the errors and warnings of scenes, files, directories or globs.
     Check(commands::check::CheckArgs),
     /// Print a scene's syntax tree, and its syntax errors on stderr.
     Syntax(commands::syntax::SyntaxArgs),

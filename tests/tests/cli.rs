@@ -202,6 +202,7 @@ fn check_reports_every_file_and_its_debug_output() {
             3 | sphere { 0, Size }
               |             ^~~~
         note: did you mean 'Sise'?
+        checked 2 scenes: 1 error, 0 warnings
     "#]]
     .assert_eq(&stderr(&output));
 }

@@ -281,6 +281,7 @@ impl<'a> Evaluator<'a> {
                     range,
                     "this scene has no #version directive; assuming #version 3.7",
                 )
+                .with_code("missing-version")
                 .with_note("add `#version 3.7;` as the scene's first line"),
             );
         }

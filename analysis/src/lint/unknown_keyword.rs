@@ -1,0 +1,80 @@
+//! A lower-case name that is declared nowhere and is a small edit away from a reserved
+//! word is almost always a misspelt keyword (`pigmnet`): say which one. The evaluator says
+//! the same when it reaches the name; this lint also finds it where the parser stops first
+//! and in branches that are never taken.
+
+use super::workspace::Workspace;
+use std::collections::HashSet;
+use syntax::{Diagnostic, SyntaxKind};
+
+pub const CODE: &str = "unknown-keyword";
+
+pub fn check(workspace: &Workspace) -> Vec<Diagnostic> {
+    let defined: HashSet<&str> = workspace
+        .files
+        .iter()
+        .flat_map(|file| file.definitions.iter().map(|d| d.name.as_str()))
+        .collect();
+    let mut warnings = Vec::new();
+    for file in workspace.user_files() {
+        for token in file
+            .root
+            .descendants_with_tokens()
+            .filter_map(|e| e.into_token())
+            .filter(|token| token.kind() == SyntaxKind::IDENT)
+        {
+            let name = token.text();
+            let Some(parent) = token.parent() else {
+                continue;
+            };
+            // Only names in expression position; `#read (F, var)` declares `var`.
+            if parent.kind() != SyntaxKind::NAME_REF
+                || parent.ancestors().any(|a| a.kind() == SyntaxKind::FILE_IO)
+                || defined.contains(name)
+                || name.len() < 3
+                || name.chars().any(|c| !(c.is_ascii_lowercase() || c == '_'))
+            {
+                continue;
+            }
+            if let Some(keyword) = closest_keyword(name) {
+                warnings.push(
+                    Diagnostic::warning(
+                        &file.name,
+                        token.text_range(),
+                        format!("unknown keyword '{name}'"),
+                    )
+                    .with_code(CODE)
+                    .with_note(format!("did you mean '{keyword}'?")),
+                );
+            }
+        }
+    }
+    warnings
+}
+
+/// The reserved word nearest to `name`, if one is close enough to be a typo.
+fn closest_keyword(name: &str) -> Option<&'static str> {
+    let limit = (name.len() / 3).clamp(1, 3);
+    syntax::KEYWORDS
+        .iter()
+        .map(|(keyword, _)| (edit_distance(name, keyword), *keyword))
+        .filter(|(distance, _)| *distance <= limit)
+        .min_by_key(|(distance, keyword)| (*distance, keyword.len()))
+        .map(|(_, keyword)| keyword)
+}
+
+/// Levenshtein distance over bytes; names here are ASCII.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b = b.as_bytes();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.bytes().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let substitution = diagonal + usize::from(ca != cb);
+            diagonal = row[j + 1];
+            row[j + 1] = substitution.min(row[j] + 1).min(row[j + 1] + 1);
+        }
+    }
+    row[b.len()]
+}
