@@ -6,6 +6,7 @@ mod commands;
 mod disk_files;
 mod render_flags;
 mod scene_paths;
+mod whole_file;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -14,7 +15,7 @@ use std::process::ExitCode;
 #[command(
     name = "povrayst",
     version,
-    about = "POV-Ray scenes: render, check, inspect"
+    about = "POV-Ray scenes: render, check, format, inspect"
 )]
 struct Cli {
     #[command(subcommand)]
@@ -27,6 +28,8 @@ enum Command {
     Render(commands::render::RenderArgs),
     /// Report the errors and warnings of scenes, files, directories or globs.
     Check(commands::check::CheckArgs),
+    /// Format SDL files in place, or with --check list those that are not formatted.
+    Fmt(commands::fmt::FmtArgs),
     /// Print a scene's syntax tree, and its syntax errors on stderr.
     Syntax(commands::syntax::SyntaxArgs),
     /// Run the language server on stdin and stdout.
@@ -58,6 +61,7 @@ fn main() -> ExitCode {
     match cli.command {
         Command::Render(args) => commands::render::run(&args),
         Command::Check(args) => commands::check::run(&args),
+        Command::Fmt(args) => commands::fmt::run(&args),
         Command::Syntax(args) => commands::syntax::run(&args),
         Command::Lsp => match lsp::run_stdio() {
             Ok(()) => Outcome::Success,

@@ -1,18 +1,26 @@
-//! The scenes named on a command line: files as given, directories searched recursively
-//! for `.pov` files, and glob patterns (`scenes/**/*.pov`) for shells that pass them on
-//! unexpanded or for patterns quoted on purpose.
+//! The files named on a command line: files as given, directories searched recursively
+//! for files with the wanted extensions (`.pov` scenes for `check`, every SDL file for
+//! `fmt`), and glob patterns (`scenes/**/*.pov`) for shells that pass them on unexpanded
+//! or for patterns quoted on purpose.
 
 use std::path::{Path, PathBuf};
 
-/// Expands each argument in turn; scenes found in a directory come sorted by path. A name
+/// Scene files, which `check` looks for in directories. Include files are not scenes: they
+/// are checked through the scenes that include them.
+pub const SCENES: &[&str] = &["pov"];
+
+/// Every kind of SDL file, which `fmt` looks for in directories.
+pub const SDL_FILES: &[&str] = &["pov", "inc", "mcr", "mac"];
+
+/// Expands each argument in turn; files found in a directory come sorted by path. A name
 /// that is neither an existing path nor a pattern that matches something is an error.
-pub fn expand(arguments: &[String]) -> Result<Vec<PathBuf>, String> {
+pub fn expand(arguments: &[String], extensions: &[&str]) -> Result<Vec<PathBuf>, String> {
     let mut scenes = Vec::new();
     for argument in arguments {
         let path = Path::new(argument);
         if path.is_dir() {
             let mut found = Vec::new();
-            collect_scenes(path, &mut found)
+            collect(path, extensions, &mut found)
                 .map_err(|error| format!("cannot read directory {argument}: {error}"))?;
             found.sort();
             scenes.extend(found);
@@ -43,19 +51,19 @@ fn is_pattern(argument: &str) -> bool {
     argument.contains(['*', '?', '['])
 }
 
-/// The `.pov` files under `dir`, at any depth. Include files are not scenes: they are
-/// checked through the scenes that include them.
-fn collect_scenes(dir: &Path, found: &mut Vec<PathBuf>) -> std::io::Result<()> {
+/// The files under `dir`, at any depth, whose extension is one of `extensions`.
+fn collect(dir: &Path, extensions: &[&str], found: &mut Vec<PathBuf>) -> std::io::Result<()> {
     for entry in std::fs::read_dir(dir)? {
         let entry = entry?;
         let path = entry.path();
         let file_type = entry.file_type()?;
         if file_type.is_dir() {
-            collect_scenes(&path, found)?;
-        } else if path
-            .extension()
-            .is_some_and(|ext| ext.eq_ignore_ascii_case("pov"))
-        {
+            collect(&path, extensions, found)?;
+        } else if path.extension().is_some_and(|ext| {
+            extensions
+                .iter()
+                .any(|wanted| ext.eq_ignore_ascii_case(wanted))
+        }) {
             found.push(path);
         }
     }
@@ -89,17 +97,24 @@ mod tests {
         };
 
         assert_eq!(
-            shown(expand(&[at("a")]).unwrap()),
+            shown(expand(&[at("a")], SCENES).unwrap()),
             ["a/b/two.POV", "a/one.pov"]
         );
         assert_eq!(
-            shown(expand(&[at("notes.txt"), at("*.pov"), at("top.pov")]).unwrap()),
+            shown(expand(&[at("a")], SDL_FILES).unwrap()),
+            ["a/b/lib.inc", "a/b/two.POV", "a/one.pov"]
+        );
+        assert_eq!(
+            shown(expand(&[at("notes.txt"), at("*.pov"), at("top.pov")], SCENES).unwrap()),
             ["notes.txt", "top.pov"]
         );
-        assert_eq!(shown(expand(&[at("a/**/*.inc")]).unwrap()), ["a/b/lib.inc"]);
-        let missing = expand(&[at("missing.pov")]).unwrap_err();
+        assert_eq!(
+            shown(expand(&[at("a/**/*.inc")], SCENES).unwrap()),
+            ["a/b/lib.inc"]
+        );
+        let missing = expand(&[at("missing.pov")], SCENES).unwrap_err();
         assert!(missing.starts_with("cannot read "), "{missing}");
-        let nothing = expand(&[at("*.mcr")]).unwrap_err();
+        let nothing = expand(&[at("*.mcr")], SCENES).unwrap_err();
         assert!(nothing.starts_with("no file matches "), "{nothing}");
     }
 }

@@ -56,7 +56,7 @@ struct Report {
 }
 
 pub fn run(args: &CheckArgs) -> Outcome {
-    let scenes = match scene_paths::expand(&args.paths) {
+    let scenes = match scene_paths::expand(&args.paths, scene_paths::SCENES) {
         Ok(scenes) => scenes,
         Err(error) => {
             eprintln!("povrayst: {error}");

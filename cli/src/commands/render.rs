@@ -7,8 +7,7 @@ use crate::disk_files::DiskFiles;
 use crate::render_flags::RenderFlags;
 use clap::Args;
 use renderer::RenderOptions;
-use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 #[derive(Args, Debug)]
 pub struct RenderArgs {
@@ -69,7 +68,7 @@ pub fn run(args: &RenderArgs) -> Outcome {
         .output
         .clone()
         .unwrap_or_else(|| args.scene.with_extension("png"));
-    match write_whole(&output, &renderer::encode_png(&rendered.image, &options)) {
+    match crate::whole_file::write(&output, &renderer::encode_png(&rendered.image, &options)) {
         Ok(()) => Outcome::Success,
         Err(error) => {
             eprintln!("povrayst: cannot write {}: {error}", output.display());
@@ -90,27 +89,6 @@ fn render_options(args: &RenderArgs) -> Result<RenderOptions, String> {
             .map_err(|error| format!("--extra: {error}"))?;
     }
     Ok(options)
-}
-
-/// Writes `bytes` to a temporary file in the destination's directory and renames it over
-/// the destination, so that readers never see a half-written image.
-fn write_whole(destination: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let file_name = destination
-        .file_name()
-        .unwrap_or_default()
-        .to_string_lossy();
-    let temporary =
-        destination.with_file_name(format!(".{file_name}.{}.povrayst-tmp", std::process::id()));
-    let written = std::fs::File::create_new(&temporary).and_then(|mut file| {
-        file.write_all(bytes)?;
-        file.sync_all()
-    });
-    let renamed = written.and_then(|()| std::fs::rename(&temporary, destination));
-    if renamed.is_err() {
-        // Nothing to do if it was never made.
-        let _ = std::fs::remove_file(&temporary);
-    }
-    renamed
 }
 
 /// Writes the files the scene wrote with `#write` beside the scene, as POV-Ray writes them
@@ -135,7 +113,7 @@ fn keep_written_files(
             );
             continue;
         }
-        if let Err(error) = write_whole(&dir.join(path), text.as_bytes()) {
+        if let Err(error) = crate::whole_file::write(&dir.join(path), text.as_bytes()) {
             eprintln!(
                 "povrayst: cannot write {}: {error}",
                 dir.join(path).display()
