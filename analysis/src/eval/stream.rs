@@ -27,10 +27,11 @@ impl Evaluator<'_> {
             if let Some(token) = self.pushed.pop() {
                 // A `#declare` held back while a declaration's value was read runs now.
                 if token.kind == HASH && !self.declaration_pending() {
-                    let keyword = self
-                        .pushed
-                        .pop()
-                        .expect("a held-back '#' comes with its keyword");
+                    // A held-back `#declare` keeps its keyword; a stray '#' given back does not.
+                    let keyword = match self.pushed.pop() {
+                        Some(keyword) => keyword,
+                        None => self.next_raw()?,
+                    };
                     self.directive(token, keyword)?;
                     continue;
                 }

@@ -281,3 +281,14 @@ declare A = 2;
         "#]],
     );
 }
+
+/// Inputs the fuzzer found; each once panicked.
+const FUZZER_FINDINGS: &[&str] = &["#debug \"before\\n\"##default { sphere { 0, 1 } }"];
+
+#[test]
+fn fuzzer_findings_give_located_errors() {
+    for text in FUZZER_FINDINGS {
+        let evaluation = eval(text);
+        syntax::diagnostic::render_human(&evaluation.diagnostics, &evaluation.sources);
+    }
+}
