@@ -1,0 +1,58 @@
+// "Check workspace": runs `povrayst check --format json` over the workspace folders and
+// shows every finding in the Problems panel, including scenes that are not open.
+
+import { execFile } from 'node:child_process';
+import * as path from 'node:path';
+import * as vscode from 'vscode';
+import { CheckFinding, Settings, checkCommand } from './serverConfig';
+
+export async function checkWorkspace(settings: Settings, collection: vscode.DiagnosticCollection): Promise<void> {
+  const folders = (vscode.workspace.workspaceFolders ?? []).map((folder) => folder.uri.fsPath);
+  if (folders.length === 0) {
+    void vscode.window.showErrorMessage('Povrayst: open a folder to check it.');
+    return;
+  }
+  const { command, args } = checkCommand(settings, folders);
+  const stdout = await new Promise<string>((resolve, reject) => {
+    // Exit status 1 only means findings; 2 is a real failure, told on stderr.
+    execFile(command, args, { maxBuffer: 64 << 20 }, (error, out, err) => {
+      if (error && error.code !== 1) {
+        reject(new Error(err || error.message));
+      } else {
+        resolve(out);
+      }
+    });
+  }).catch((error: Error) => {
+    void vscode.window.showErrorMessage(`Povrayst: check failed: ${error.message}`);
+    return undefined;
+  });
+  if (stdout === undefined) {
+    return;
+  }
+  const findings = JSON.parse(stdout) as CheckFinding[];
+  const byFile = new Map<string, vscode.Diagnostic[]>();
+  for (const finding of findings) {
+    const start = finding.range?.start ?? { line: 1, column: 1 };
+    const end = finding.range?.end ?? start;
+    const range = new vscode.Range(start.line - 1, start.column - 1, end.line - 1, end.column - 1);
+    const message = [finding.message, ...finding.notes.map((note) => `note: ${note}`)].join('\n');
+    const severity =
+      finding.severity === 'error' ? vscode.DiagnosticSeverity.Error : vscode.DiagnosticSeverity.Warning;
+    const diagnostic = new vscode.Diagnostic(range, message, severity);
+    diagnostic.source = 'povrayst check';
+    if (finding.code) {
+      diagnostic.code = finding.code;
+    }
+    // Files found on disk are named by their paths; standard includes by their bare names.
+    const file = path.resolve(folders[0], finding.file);
+    byFile.set(file, [...(byFile.get(file) ?? []), diagnostic]);
+  }
+  collection.clear();
+  for (const [file, diagnostics] of byFile) {
+    collection.set(vscode.Uri.file(file), diagnostics);
+  }
+  const errors = findings.filter((finding) => finding.severity === 'error').length;
+  void vscode.window.showInformationMessage(
+    `Povrayst: ${errors} errors and ${findings.length - errors} warnings in ${folders.join(', ')}.`,
+  );
+}
