@@ -129,10 +129,15 @@ check(':PovrayRender writes a PNG beside the scene', function()
     'sphere { 0, 1 pigment { rgb 1 } }',
   }))
   local png = work .. '/render.png'
+  local said
+  vim.notify = function(message)
+    said = message
+  end
   vim.cmd('PovrayRender --width 16 --height 12')
-  wait_for('render.png', function()
-    return vim.fn.filereadable(png) == 1
+  wait_for('the render to finish', function()
+    return said ~= nil
   end)
+  assert(said == 'PovrayRender: wrote ' .. png, said)
   local header = vim.fn.readfile(png, 'b', 1)[1]
   assert(header:find('PNG'), 'not a PNG')
 end)
