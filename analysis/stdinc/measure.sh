@@ -135,9 +135,15 @@ for probe in "$here"/probes/*.pov; do
 done
 echo "measure.sh: expected output of every probe written to $here/probes"
 
-# Colour maps: woodmaps.inc's and the .map files', sampled by measure-maps.py.
+# Colour maps: woodmaps.inc's, textures.inc's and the .map files', sampled by
+# measure-maps.py.
 maps=""
 for i in $(seq 1 19); do maps="$maps woodmaps.inc:M_Wood${i}A woodmaps.inc:M_Wood${i}B"; done
+# textures.inc's colour maps, as the manual names them (section 3.4.9.1.28).
+for name in Jade_Map Red_Marble_Map White_Marble_Map Blood_Marble_Map Blue_Agate_Map \
+    Sapphire_Agate_Map Brown_Agate_Map Pink_Granite_Map Blue_Sky_Map Lightning_CMap1 Lightning_CMap2; do
+    maps="$maps textures.inc:$name"
+done
 for file in "$std"/*.map; do
     name=$(sed -nE 's/^[[:space:]]*#declare[[:space:]]+(M_[A-Za-z_0-9]+)[[:space:]]*=.*/\1/p' "$file" | head -1)
     maps="$maps $(basename "$file"):$name"
