@@ -2,10 +2,14 @@
 //!
 //! Exit status: 0 when all went well, 1 when a scene has errors, 2 for usage and I/O errors.
 
+mod animation;
 mod commands;
 mod disk_files;
+mod invocation;
+mod progress;
 mod render_flags;
 mod scene_paths;
+mod tiles;
 mod whole_file;
 
 use clap::{Parser, Subcommand};
@@ -30,6 +34,8 @@ enum Command {
     Check(commands::check::CheckArgs),
     /// Format SDL files in place, or with --check list those that are not formatted.
     Fmt(commands::fmt::FmtArgs),
+    /// Join the bands that `render --tile i/n` wrote into one picture.
+    Stitch(commands::stitch::StitchArgs),
     /// Print a scene's syntax tree, and its syntax errors on stderr.
     Syntax(commands::syntax::SyntaxArgs),
     /// Run the language server on stdin and stdout.
@@ -62,6 +68,7 @@ fn main() -> ExitCode {
         Command::Render(args) => commands::render::run(&args),
         Command::Check(args) => commands::check::run(&args),
         Command::Fmt(args) => commands::fmt::run(&args),
+        Command::Stitch(args) => commands::stitch::run(&args),
         Command::Syntax(args) => commands::syntax::run(&args),
         Command::Lsp => match lsp::run_stdio() {
             Ok(()) => Outcome::Success,

@@ -57,7 +57,18 @@ pub fn render_source(
         clock_on: options.clock.is_some(),
         ..EvalOptions::default()
     };
-    let evaluation = analysis::check_with(main, files, &eval_options, &crate::SceneGeometry);
+    render_source_with(main, files, options, &eval_options)
+}
+
+/// [`render_source`] with the evaluation's options given, for front ends that know more
+/// than the picture options say: the frame of an animation and its clock range.
+pub fn render_source_with(
+    main: &str,
+    files: &dyn FileSource,
+    options: &RenderOptions,
+    eval_options: &EvalOptions,
+) -> Result<Rendered, Failure> {
+    let evaluation = analysis::check_with(main, files, eval_options, &crate::SceneGeometry);
     let scene = match evaluation.scene {
         Some(scene) if !evaluation.diagnostics.iter().any(Diagnostic::is_error) => scene,
         _ => {

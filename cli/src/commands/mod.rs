@@ -3,4 +3,5 @@
 pub mod check;
 pub mod fmt;
 pub mod render;
+pub mod stitch;
 pub mod syntax;
