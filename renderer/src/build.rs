@@ -7,7 +7,10 @@ use crate::colour::Sample;
 use crate::light::Light;
 use crate::material::Material;
 use crate::object::{Csg, CsgKind, Leaf, Object, Visibility};
-use crate::shapes::{Cone, Cuboid, Cylinder, Disc, Plane, Shape, Sphere, Torus, Triangle};
+use crate::shapes::{
+    Cone, Cuboid, Cylinder, Disc, Plane, Shape, ShapeReport, Sphere, Torus, Triangle,
+    build_math_shape,
+};
 use crate::tracer::{Quality, World};
 use analysis::scene::{self, CsgOp, Interior, Origin, Scene};
 use glam::{DAffine3, DMat3, DVec3};
@@ -36,6 +39,7 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
         materials: HashMap::new(),
         default_material: None,
         lights: Vec::new(),
+        reports: Vec::new(),
     };
     for light in &scene.lights {
         builder.add_light(light)?;
@@ -82,6 +86,7 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
         adc_bailout: scene.settings.adc_bailout,
         legacy_opacity: legacy,
         scale,
+        shape_reports: builder.reports,
     })
 }
 
@@ -103,6 +108,7 @@ struct Builder {
     materials: HashMap<*const scene::Texture, Arc<Material>>,
     default_material: Option<Arc<Material>>,
     lights: Vec<Light>,
+    reports: Vec<ShapeReport>,
 }
 
 impl Builder {
@@ -350,6 +356,10 @@ impl Builder {
                 }),
                 DAffine3::IDENTITY,
             ),
+            _ => match build_math_shape(object, &mut self.reports).map_err(fail)? {
+                Some((shape, frame)) => (Shape::Math(Box::new(shape)), frame),
+                None => return Ok(None),
+            },
         };
         let material = self.material(texture, &object.origin)?;
         let to_world = object.transform.matrix * frame;

@@ -6,6 +6,8 @@ mod build;
 mod bvh;
 mod camera;
 mod colour;
+mod fast_math;
+mod function_program;
 mod geometry;
 mod image;
 mod light;
@@ -20,6 +22,7 @@ mod ray;
 mod render;
 mod sampling;
 mod shapes;
+mod sturm;
 mod tracer;
 
 pub use build::BuildError;

@@ -115,11 +115,13 @@ impl Leaf {
         self.standalone
             && !self.material.transmits
             && self.visibility.sees(q.kind)
-            && self
-                .roots(&q.ray)
-                .as_slice()
-                .iter()
-                .any(|r| r.t > q.tmin && r.t < q.tmax)
+            && self.first_hit(q).is_some()
+    }
+
+    /// The nearest crossing inside the query's interval.
+    fn first_hit(&self, q: &Query) -> Option<crate::shapes::Root> {
+        self.shape
+            .first_hit(&self.local_ray(&q.ray), q.tmin, q.tmax)
     }
 
     /// The unit outward normal in the world at a point of this leaf's surface.
@@ -306,18 +308,11 @@ impl Object {
                 if !leaf.visibility.sees(q.kind) {
                     return None;
                 }
-                let roots = leaf.roots(&q.ray);
-                let mut best: Option<Hit<'a>> = None;
-                for r in roots.as_slice() {
-                    if r.t > q.tmin && r.t < q.tmax && best.is_none_or(|b| r.t < b.t) {
-                        best = Some(Hit {
-                            t: r.t,
-                            leaf,
-                            part: r.part,
-                        });
-                    }
-                }
-                best
+                leaf.first_hit(q).map(|r| Hit {
+                    t: r.t,
+                    leaf,
+                    part: r.part,
+                })
             }
             Object::Csg(csg) if csg.kind == CsgKind::Union => {
                 let mut q = *q;

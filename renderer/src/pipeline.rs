@@ -79,14 +79,21 @@ pub fn render_source_with(
             });
         }
     };
-    match crate::render::render(&scene, options) {
-        Ok(image) => Ok(Rendered {
-            image,
-            messages: evaluation.messages,
-            warnings: evaluation.diagnostics,
-            sources: evaluation.sources,
-            written: evaluation.written,
-        }),
+    match crate::render::render_with_warnings(&scene, options) {
+        Ok((image, found)) => {
+            let mut warnings = evaluation.diagnostics;
+            warnings.extend(found.into_iter().map(|(message, origin)| match origin {
+                Some(span) => Diagnostic::warning(span.file, span.range, message),
+                None => Diagnostic::warning(main, TextRange::default(), message),
+            }));
+            Ok(Rendered {
+                image,
+                messages: evaluation.messages,
+                warnings,
+                sources: evaluation.sources,
+                written: evaluation.written,
+            })
+        }
         Err(error) => {
             let diagnostic = match error.origin {
                 Some(span) => Diagnostic::error(span.file, span.range, error.message),

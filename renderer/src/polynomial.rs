@@ -165,6 +165,44 @@ pub fn quartic_roots_in(coeffs: &[f64; 5], lo: f64, hi: f64) -> ([f64; 4], usize
     found
 }
 
+/// The real roots of the cubic `coeffs` (lowest degree first) in `[lo, hi]`, ascending:
+/// the closed form, each root polished by two Newton steps on the cubic itself. A
+/// vanishing leading coefficient falls back to the general search.
+pub fn cubic_roots_in(coeffs: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3], usize) {
+    let mut found = ([0.0; 3], 0);
+    let lead = coeffs[3];
+    let scale = coeffs.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    if lead.abs() <= 1e-14 * scale || !scale.is_finite() || lead.is_nan() {
+        let mut searched = Vec::new();
+        roots_in(coeffs, lo, hi, &mut searched);
+        for x in searched.into_iter().take(3) {
+            found.0[found.1] = x;
+            found.1 += 1;
+        }
+        return found;
+    }
+    let (xs, n) = cubic_roots(coeffs[2] / lead, coeffs[1] / lead, coeffs[0] / lead);
+    for &x0 in &xs[..n] {
+        let mut x = x0;
+        for _ in 0..2 {
+            let f = ((coeffs[3] * x + coeffs[2]) * x + coeffs[1]) * x + coeffs[0];
+            let df = (3.0 * coeffs[3] * x + 2.0 * coeffs[2]) * x + coeffs[1];
+            if df != 0.0 {
+                let next = x - f / df;
+                if next.is_finite() {
+                    x = next;
+                }
+            }
+        }
+        if x >= lo && x <= hi && x.is_finite() {
+            found.0[found.1] = x;
+            found.1 += 1;
+        }
+    }
+    found.0[..found.1].sort_by(f64::total_cmp);
+    found
+}
+
 /// The real roots of the monic cubic x³ + a x² + b x + c and how many there are (1 or 3).
 fn cubic_roots(a: f64, b: f64, c: f64) -> ([f64; 3], usize) {
     let q = (a * a - 3.0 * b) / 9.0;

@@ -10,11 +10,21 @@ use crate::image::Image;
 use crate::options::{Extent, Gamma, RenderOptions};
 use crate::sampling::{self, CompareCurve, Compared, Sampler, Subdivider};
 use crate::tracer::Tracer;
-use analysis::scene::Scene;
+use analysis::scene::{Origin, Scene};
 use glam::DVec3;
 
 /// Renders a scene. `Err` names a scene feature this renderer cannot draw yet.
 pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Image, BuildError> {
+    render_with_warnings(scene, options).map(|(image, _)| image)
+}
+
+/// [`render`], with the warnings shapes raise about what the render found (POV-Ray's
+/// warnings after a render, such as an isosurface's max_gradient), each with where the
+/// scene wrote the shape.
+pub fn render_with_warnings(
+    scene: &Scene,
+    options: &RenderOptions,
+) -> Result<(Image, Vec<(String, Origin)>), BuildError> {
     let world = build_world(
         scene,
         BuildSettings {
@@ -69,7 +79,12 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Image, BuildErro
             image.set_pixel(x, y, output.pixel(*s));
         }
     }
-    Ok(image)
+    let warnings = world
+        .shape_reports
+        .iter()
+        .filter_map(|r| r.message().map(|m| (m, r.origin.clone())))
+        .collect();
+    Ok((image, warnings))
 }
 
 /// The inclusive pixel rectangle a partial render covers.

@@ -58,6 +58,8 @@ pub struct World {
     /// The size of the scene, from which the self-intersection tolerance follows so that
     /// scenes at any scale trace alike.
     pub scale: f64,
+    /// Shapes with something to report after the render (an isosurface's max_gradient).
+    pub shape_reports: Vec<crate::shapes::ShapeReport>,
 }
 
 /// POV-Ray's greyscale weights.

@@ -15,6 +15,7 @@ mod file_io;
 mod function_body;
 mod light;
 mod macros;
+mod math_shapes;
 mod object;
 mod rng;
 mod scene_items;

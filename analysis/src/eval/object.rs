@@ -1,6 +1,7 @@
 //! Object statements: the shapes, CSG, `object { }` references, and the modifiers every
 //! object takes (transformations, textures, flags, clipping and bounding).
 
+use super::math_shapes::MATH_SHAPES;
 use super::tokens::Token;
 use super::value::{MaterialValue, Value};
 use super::{Evaluator, Result};
@@ -12,26 +13,10 @@ use syntax::SyntaxKind::{self, *};
 /// Shapes we parse the name of but cannot draw yet; they fail with a located error.
 const UNSUPPORTED_SHAPES: &[SyntaxKind] = &[
     BICUBIC_PATCH_KW,
-    BLOB_KW,
-    CUBIC_KW,
-    HEIGHT_FIELD_KW,
-    ISOSURFACE_KW,
-    JULIA_FRACTAL_KW,
-    LATHE_KW,
-    LEMON_KW,
     LIGHT_GROUP_KW,
     MESH_KW,
     MESH2_KW,
-    OVUS_KW,
-    PARAMETRIC_KW,
-    POLY_KW,
     POLYGON_KW,
-    POLYNOMIAL_KW,
-    PRISM_KW,
-    QUARTIC_KW,
-    SOR_KW,
-    SPHERE_SWEEP_KW,
-    SUPERELLIPSOID_KW,
     TEXT_KW,
 ];
 
@@ -56,6 +41,7 @@ impl Evaluator<'_> {
                 | MERGE_KW
                 | OBJECT_KW
         ) || UNSUPPORTED_SHAPES.contains(&kind)
+            || MATH_SHAPES.contains(&kind)
     }
 
     /// One object statement, from its keyword to its closing brace.
@@ -236,6 +222,7 @@ impl Evaluator<'_> {
                     }
                 }
             }
+            kind if MATH_SHAPES.contains(&kind) => Object::new(self.math_shape(&keyword)?, origin),
             kind if UNSUPPORTED_SHAPES.contains(&kind) => {
                 return Err(self.unsupported(&keyword, self.text(&keyword)));
             }
@@ -329,11 +316,17 @@ impl Evaluator<'_> {
                     let on = self.optional_bool()?;
                     if let Shape::Torus { sturm, .. } = &mut object.shape {
                         *sturm = on;
+                    } else {
+                        Self::set_sturm(&mut object.shape, on);
                     }
                 }
                 OPEN_KW => match &mut object.shape {
                     Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => {
                         *open = self.optional_bool()?
+                    }
+                    shape if Self::takes_open(shape) => {
+                        let on = self.optional_bool()?;
+                        Self::set_open(&mut object.shape, on);
                     }
                     _ => {
                         return Err(self.error_at(
@@ -367,7 +360,7 @@ impl Evaluator<'_> {
 
     /// `pigment { }`, `normal { }` or `finish { }` applied to an object: they modify the
     /// object's own plain texture, which starts as a copy of the default texture.
-    fn texture_part(&mut self, object: &mut Object, keyword: &Token) -> Result<()> {
+    pub(super) fn texture_part(&mut self, object: &mut Object, keyword: &Token) -> Result<()> {
         let mut texture = match object.texture.take() {
             Some(texture) => Texture::clone(&texture),
             None => self.default_texture.clone(),

@@ -55,7 +55,7 @@ pub enum Op {
 }
 
 /// Functions of one argument.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Unary {
     Abs,
     Acos,

@@ -6,6 +6,7 @@
 mod camera;
 mod colour;
 mod light;
+pub mod math_shapes;
 mod object;
 mod settings;
 mod texture;

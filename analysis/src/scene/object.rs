@@ -1,3 +1,7 @@
+use super::math_shapes::{
+    Blob, HeightField, Isosurface, JuliaFractal, Lathe, Lemon, Parametric, Polynomial, Prism, Sor,
+    SphereSweep, Text,
+};
 use super::{Colour, Light, Origin, Texture, Transform};
 use glam::DVec3;
 use std::sync::Arc;
@@ -67,6 +71,29 @@ pub enum Shape {
         corners: [DVec3; 3],
         normals: [DVec3; 3],
     },
+    /// `poly`, `cubic`, `quartic` and `polynomial`.
+    Polynomial(Box<Polynomial>),
+    Isosurface(Box<Isosurface>),
+    Parametric(Box<Parametric>),
+    JuliaFractal(Box<JuliaFractal>),
+    SphereSweep(Box<SphereSweep>),
+    Lathe(Box<Lathe>),
+    Sor(Box<Sor>),
+    Prism(Box<Prism>),
+    Blob(Box<Blob>),
+    /// `superellipsoid { <e, n> }`: |x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1.
+    Superellipsoid {
+        e: f64,
+        n: f64,
+    },
+    /// `ovus { bottom_radius, top_radius }`: two spheres on the y axis joined smoothly.
+    Ovus {
+        bottom_radius: f64,
+        top_radius: f64,
+    },
+    Lemon(Box<Lemon>),
+    HeightField(Box<HeightField>),
+    Text(Box<Text>),
     /// Union, merge, intersection and difference. Children carry their own transforms
     /// and textures; lights inside a CSG are kept with it.
     Csg {

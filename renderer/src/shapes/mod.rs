@@ -6,8 +6,13 @@ mod cone;
 mod cuboid;
 mod cylinder;
 mod disc;
+mod isosurface;
+mod julia;
+mod math_shape;
 mod plane;
+mod poly;
 mod sphere;
+mod sphere_sweep;
 mod torus;
 mod triangle;
 
@@ -15,6 +20,7 @@ pub use cone::Cone;
 pub use cuboid::Cuboid;
 pub use cylinder::Cylinder;
 pub use disc::Disc;
+pub use math_shape::{MathShape, ShapeReport, build as build_math_shape};
 pub use plane::Plane;
 pub use sphere::Sphere;
 pub use torus::Torus;
@@ -82,6 +88,8 @@ pub enum Shape {
     Disc(Disc),
     Torus(Torus),
     Triangle(Triangle),
+    /// Polynomials, isosurfaces, fractals, sweeps and the other mathematical shapes.
+    Math(Box<MathShape>),
 }
 
 impl Shape {
@@ -96,7 +104,24 @@ impl Shape {
             Shape::Disc(s) => s.intersect(ray, roots),
             Shape::Torus(s) => s.intersect(ray, roots),
             Shape::Triangle(s) => s.intersect(ray, roots),
+            Shape::Math(s) => s.intersect(ray, roots),
         }
+    }
+
+    /// The nearest crossing in `(tmin, tmax)`. Shapes that search iteratively stop at it
+    /// instead of finding every crossing.
+    pub fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<Root> {
+        if let Shape::Math(s) = self {
+            return s.first_hit(ray, tmin, tmax);
+        }
+        let mut roots = Roots::new();
+        self.intersect(ray, &mut roots);
+        roots
+            .as_slice()
+            .iter()
+            .copied()
+            .filter(|r| r.t > tmin && r.t < tmax)
+            .min_by(|a, b| a.t.total_cmp(&b.t))
     }
 
     pub fn inside(&self, p: DVec3) -> bool {
@@ -109,6 +134,7 @@ impl Shape {
             Shape::Disc(s) => s.inside(p),
             Shape::Torus(s) => s.inside(p),
             Shape::Triangle(_) => false,
+            Shape::Math(s) => s.inside(p),
         }
     }
 
@@ -123,6 +149,7 @@ impl Shape {
             Shape::Disc(_) => DVec3::Z,
             Shape::Torus(s) => s.normal(p),
             Shape::Triangle(s) => s.normal(p),
+            Shape::Math(s) => s.normal(p, part),
         }
     }
 
@@ -149,6 +176,7 @@ impl Shape {
                 let [a, b, c] = s.corners;
                 Aabb::new(a.min(b).min(c), a.max(b).max(c))
             }
+            Shape::Math(s) => s.bounds(),
         }
     }
 }

@@ -1,0 +1,597 @@
+//! `julia_fractal`: the points h₀ of a 3-D slice of 4-space whose orbit h ← f(h) + p stays
+//! bounded for `max_iteration` steps. Rays march as POV-Ray's do, so that the same thin
+//! filaments show: from the bounding sphere in steps of the distance estimate, never
+//! shorter than 1/precision, until a step crosses the set's boundary, which bisection then
+//! pins down to 1e-7. The normal is the gradient of |h_n|² with respect to the point.
+
+use super::Root;
+use crate::ray::Ray;
+use analysis::scene::math_shapes::{JuliaAlgebra, JuliaFunction};
+use glam::{DVec3, DVec4};
+
+/// How finely a crossing is pinned down, in the fractal's own units.
+const TOLERANCE: f64 = 1e-7;
+
+/// The longest orbit traced; longer `max_iteration`s are clamped here.
+pub const MAX_ITERATIONS: u32 = 4096;
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Julia {
+    pub parameter: DVec4,
+    pub algebra: JuliaAlgebra,
+    pub function: JuliaFunction,
+    pub iterations: u32,
+    /// The shortest march step: 1/precision.
+    pub min_step: f64,
+    pub slice: DVec4,
+    pub slice_distance: f64,
+    /// The bounding sphere's radius, and the squared norm past which an orbit escapes.
+    pub radius: f64,
+    pub exit: f64,
+}
+
+impl Julia {
+    pub fn new(
+        parameter: DVec4,
+        algebra: JuliaAlgebra,
+        function: JuliaFunction,
+        max_iteration: u32,
+        precision: f64,
+        slice: DVec4,
+        slice_distance: f64,
+    ) -> Julia {
+        // POV-Ray's bounds: quaternion sets lie within 1 + |p| (at most 2), hypercomplex
+        // ones within 4.
+        let (radius, exit) = match algebra {
+            JuliaAlgebra::Quaternion => {
+                let r = (1.0 + parameter.length() + TOLERANCE).min(2.0);
+                (r, r * r + TOLERANCE)
+            }
+            JuliaAlgebra::Hypercomplex => (4.0, 16.0),
+        };
+        Julia {
+            parameter,
+            algebra,
+            function,
+            iterations: max_iteration.clamp(1, MAX_ITERATIONS),
+            min_step: 1.0 / precision.max(1.0),
+            slice,
+            slice_distance,
+            radius,
+            exit,
+        }
+    }
+
+    /// The 4-D point of the slice above `p`.
+    fn lift(&self, p: DVec3) -> DVec4 {
+        let w = (self.slice_distance - self.slice.truncate().dot(p)) / self.slice.w;
+        DVec4::new(p.x, p.y, p.z, w)
+    }
+
+    /// Whether the orbit of `p` stays bounded.
+    pub fn inside_point(&self, p: DVec3) -> bool {
+        self.orbit(self.lift(p)).0
+    }
+
+    /// Whether the orbit of `h` stays bounded, and a lower bound of the distance to the set
+    /// when it escapes (the step a march may take).
+    fn orbit(&self, h: DVec4) -> (bool, f64) {
+        match (self.algebra, self.function) {
+            (JuliaAlgebra::Quaternion, JuliaFunction::Cube) => self.quaternion_orbit(h, 3.0),
+            (JuliaAlgebra::Quaternion, _) => self.quaternion_orbit(h, 2.0),
+            (JuliaAlgebra::Hypercomplex, _) => self.hypercomplex_orbit(h),
+        }
+    }
+
+    /// Quaternion squares or cubes. Quaternion norms multiply, so the derivative's norm
+    /// for the distance estimate is the power times the product of the orbit's norms.
+    fn quaternion_orbit(&self, h: DVec4, power: f64) -> (bool, f64) {
+        let p = self.parameter;
+        let (mut x, mut y, mut z, mut w) = (h.x, h.y, h.z, h.w);
+        let mut product: f64 = 1.0;
+        let mut scale = 1.0;
+        for _ in 0..self.iterations {
+            let d = y * y + z * z + w * w;
+            let x2 = x * x;
+            let norm = x2 + d;
+            if norm > self.exit {
+                // POV-Ray's estimate over the k points of the orbit so far, the escaping
+                // one included: |h|·ln|h|² / (n^k · Π|h_j|).
+                let dist = norm.ln() / (product.sqrt() * scale * power);
+                return (false, dist);
+            }
+            product *= norm;
+            scale *= power;
+            if power == 2.0 {
+                let x2w = 2.0 * x;
+                y = x2w * y + p.y;
+                z = x2w * z + p.z;
+                w = x2w * w + p.w;
+                x = x2 - d + p.x;
+            } else {
+                let t = 3.0 * x2 - d;
+                x = x * (x2 - 3.0 * d) + p.x;
+                y = y * t + p.y;
+                z = z * t + p.z;
+                w = w * t + p.w;
+            }
+        }
+        (true, self.min_step)
+    }
+
+    /// Hypercomplex iteration: the algebra splits into two complex planes,
+    /// (x - w) + i(y + z) and (x + w) + i(y - z), where f acts on each.
+    fn hypercomplex_orbit(&self, h: DVec4) -> (bool, f64) {
+        let (mut a, mut b) = split(h);
+        let (pa, pb) = split(self.parameter);
+        let mut da = Complex::ONE;
+        let mut db = Complex::ONE;
+        for _ in 0..self.iterations {
+            let norm = merged_norm(a, b);
+            if norm > self.exit || !norm.is_finite() {
+                let derivative = 0.5 * (da.norm() + db.norm());
+                let dist = if derivative > 0.0 {
+                    0.5 * norm.sqrt() * norm.ln() / derivative
+                } else {
+                    self.min_step
+                };
+                return (false, dist.max(0.0));
+            }
+            let (fa, fda) = apply(self.function, a);
+            let (fb, fdb) = apply(self.function, b);
+            da = fda.mul(da);
+            db = fdb.mul(db);
+            a = fa.add(pa);
+            b = fb.add(pb);
+        }
+        (true, self.min_step)
+    }
+
+    /// The nearest crossing in `(tmin, tmax)` when `first` is set, or up to `out.len()`
+    /// crossings from the start; returns how many were found.
+    pub fn crossings(
+        &self,
+        ray: &Ray,
+        tmin: f64,
+        tmax: f64,
+        first: bool,
+        out: &mut [f64],
+    ) -> usize {
+        let len = ray.direction.length();
+        if !len.is_finite() || len <= 0.0 {
+            return 0;
+        }
+        let dir = ray.direction / len;
+        // The bounding sphere, in unit steps along the normalised direction.
+        let b = ray.origin.dot(dir);
+        let c = ray.origin.length_squared() - self.radius * self.radius;
+        let disc = b * b - c;
+        if disc.is_nan() || disc < 0.0 {
+            return 0;
+        }
+        let root = disc.sqrt();
+        let (near, far) = (-b - root, -b + root);
+        let end = far.min(tmax * len);
+        if end < TOLERANCE {
+            return 0;
+        }
+        let mut depth = near.max(TOLERANCE).max(tmin * len);
+        if depth > end {
+            return 0;
+        }
+        let mut next_point = ray.origin + dir * depth;
+        let (mut current, mut dist) = self.orbit(self.lift(next_point));
+        if current {
+            // A ray starting inside (a shadow ray from the surface) moves off first.
+            next_point += dir * (2.0 * TOLERANCE);
+            depth += 2.0 * TOLERANCE;
+            if depth > end {
+                return 0;
+            }
+            (current, dist) = self.orbit(self.lift(next_point));
+        }
+        let mut found = 0;
+        'march: while depth < end && found < out.len() {
+            // March until a step lands on the other side of the boundary.
+            let (mut point, next, next_dist) = loop {
+                let step = dist.max(self.min_step);
+                depth += step;
+                if depth > end {
+                    break 'march;
+                }
+                let before = next_point;
+                next_point += dir * step;
+                let (next, next_dist) = self.orbit(self.lift(next_point));
+                if next != current {
+                    depth -= step;
+                    dist = step;
+                    break (before, next, next_dist);
+                }
+                dist = next_dist;
+            };
+            // Halve the step until it is below the tolerance, keeping the point on the
+            // starting side of the boundary.
+            while dist > TOLERANCE {
+                dist *= 0.5;
+                let mid = point + dir * dist;
+                if self.inside_point(mid) == current {
+                    point = mid;
+                    depth += dist;
+                    if depth > end {
+                        break 'march;
+                    }
+                }
+            }
+            if !current {
+                depth += dist;
+            }
+            out[found] = depth / len;
+            found += 1;
+            if first {
+                break;
+            }
+            current = next;
+            dist = next_dist;
+        }
+        found
+    }
+
+    /// The gradient of |h_n|² at `p`: outward where orbits escape.
+    pub fn normal(&self, p: DVec3) -> DVec3 {
+        let h = self.lift(p);
+        // Finite differences of the escape-time potential would be noisy; instead the
+        // Jacobian of the orbit is carried along with it, as POV-Ray does (with w held
+        // fixed, as POV-Ray holds it).
+        let mut q = h;
+        let mut jac = [
+            DVec4::new(1.0, 0.0, 0.0, 0.0),
+            DVec4::new(0.0, 1.0, 0.0, 0.0),
+            DVec4::new(0.0, 0.0, 1.0, 0.0),
+        ];
+        for _ in 0..self.iterations {
+            let (next, derivative) = self.step_with_derivative(q);
+            for j in &mut jac {
+                *j = derivative(*j);
+            }
+            q = next;
+            if !q.is_finite() || q.length_squared() > 1e100 {
+                break;
+            }
+        }
+        let n = DVec3::new(jac[0].dot(q), jac[1].dot(q), jac[2].dot(q));
+        if n.is_finite() && n != DVec3::ZERO {
+            n
+        } else {
+            p
+        }
+    }
+
+    /// One step of the orbit from `q`, and the map of a tangent vector through it.
+    fn step_with_derivative(&self, q: DVec4) -> (DVec4, impl Fn(DVec4) -> DVec4 + use<>) {
+        let p = self.parameter;
+        let algebra = self.algebra;
+        let function = self.function;
+        let next = match (algebra, function) {
+            (JuliaAlgebra::Quaternion, JuliaFunction::Cube) => {
+                let d = q.y * q.y + q.z * q.z + q.w * q.w;
+                let x2 = q.x * q.x;
+                let t = 3.0 * x2 - d;
+                DVec4::new(q.x * (x2 - 3.0 * d), q.y * t, q.z * t, q.w * t) + p
+            }
+            (JuliaAlgebra::Quaternion, _) => {
+                let d = q.y * q.y + q.z * q.z + q.w * q.w;
+                DVec4::new(
+                    q.x * q.x - d,
+                    2.0 * q.x * q.y,
+                    2.0 * q.x * q.z,
+                    2.0 * q.x * q.w,
+                ) + p
+            }
+            (JuliaAlgebra::Hypercomplex, f) => {
+                let (a, b) = split(q);
+                let (pa, pb) = split(p);
+                merge(apply(f, a).0.add(pa), apply(f, b).0.add(pb))
+            }
+        };
+        let derivative = move |v: DVec4| -> DVec4 {
+            match (algebra, function) {
+                (JuliaAlgebra::Quaternion, JuliaFunction::Cube) => {
+                    // d(h³) = h² dh + h dh h + dh h² for quaternions.
+                    let h2 = qmul(q, q);
+                    qmul(h2, v) + qmul(qmul(q, v), q) + qmul(v, h2)
+                }
+                (JuliaAlgebra::Quaternion, _) => qmul(q, v) + qmul(v, q),
+                (JuliaAlgebra::Hypercomplex, f) => {
+                    let (a, b) = split(q);
+                    let (va, vb) = split(v);
+                    merge(apply(f, a).1.mul(va), apply(f, b).1.mul(vb))
+                }
+            }
+        };
+        (next, derivative)
+    }
+}
+
+/// The quaternion product.
+fn qmul(a: DVec4, b: DVec4) -> DVec4 {
+    DVec4::new(
+        a.x * b.x - a.y * b.y - a.z * b.z - a.w * b.w,
+        a.x * b.y + a.y * b.x + a.z * b.w - a.w * b.z,
+        a.x * b.z - a.y * b.w + a.z * b.x + a.w * b.y,
+        a.x * b.w + a.y * b.z - a.z * b.y + a.w * b.x,
+    )
+}
+
+/// A complex number.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Complex {
+    re: f64,
+    im: f64,
+}
+
+impl Complex {
+    const ONE: Complex = Complex { re: 1.0, im: 0.0 };
+
+    fn new(re: f64, im: f64) -> Complex {
+        Complex { re, im }
+    }
+
+    fn add(self, o: Complex) -> Complex {
+        Complex::new(self.re + o.re, self.im + o.im)
+    }
+
+    fn sub(self, o: Complex) -> Complex {
+        Complex::new(self.re - o.re, self.im - o.im)
+    }
+
+    fn mul(self, o: Complex) -> Complex {
+        Complex::new(
+            self.re * o.re - self.im * o.im,
+            self.re * o.im + self.im * o.re,
+        )
+    }
+
+    fn div(self, o: Complex) -> Complex {
+        let d = o.re * o.re + o.im * o.im;
+        Complex::new(
+            (self.re * o.re + self.im * o.im) / d,
+            (self.im * o.re - self.re * o.im) / d,
+        )
+    }
+
+    fn scale(self, s: f64) -> Complex {
+        Complex::new(self.re * s, self.im * s)
+    }
+
+    fn norm(self) -> f64 {
+        self.re.hypot(self.im)
+    }
+
+    fn exp(self) -> Complex {
+        let m = self.re.exp();
+        Complex::new(m * self.im.cos(), m * self.im.sin())
+    }
+
+    fn ln(self) -> Complex {
+        Complex::new(self.norm().ln(), self.im.atan2(self.re))
+    }
+
+    fn sqrt(self) -> Complex {
+        let m = self.norm();
+        let re = ((m + self.re) * 0.5).max(0.0).sqrt();
+        let im = ((m - self.re) * 0.5).max(0.0).sqrt();
+        Complex::new(re, if self.im < 0.0 { -im } else { im })
+    }
+
+    fn sin(self) -> Complex {
+        Complex::new(
+            self.re.sin() * self.im.cosh(),
+            self.re.cos() * self.im.sinh(),
+        )
+    }
+
+    fn cos(self) -> Complex {
+        Complex::new(
+            self.re.cos() * self.im.cosh(),
+            -self.re.sin() * self.im.sinh(),
+        )
+    }
+
+    fn sinh(self) -> Complex {
+        Complex::new(
+            self.re.sinh() * self.im.cos(),
+            self.re.cosh() * self.im.sin(),
+        )
+    }
+
+    fn cosh(self) -> Complex {
+        Complex::new(
+            self.re.cosh() * self.im.cos(),
+            self.re.sinh() * self.im.sin(),
+        )
+    }
+}
+
+const I: Complex = Complex { re: 0.0, im: 1.0 };
+
+/// f(z) and f'(z) for one complex plane of the hypercomplex algebra.
+fn apply(f: JuliaFunction, z: Complex) -> (Complex, Complex) {
+    let one = Complex::ONE;
+    match f {
+        JuliaFunction::Sqr => (z.mul(z), z.scale(2.0)),
+        JuliaFunction::Cube => (z.mul(z).mul(z), z.mul(z).scale(3.0)),
+        JuliaFunction::Reciprocal => {
+            let r = one.div(z);
+            (r, r.mul(r).scale(-1.0))
+        }
+        JuliaFunction::Exp => {
+            let e = z.exp();
+            (e, e)
+        }
+        JuliaFunction::Ln => (z.ln(), one.div(z)),
+        JuliaFunction::Sin => (z.sin(), z.cos()),
+        JuliaFunction::Cos => (z.cos(), z.sin().scale(-1.0)),
+        JuliaFunction::Tan => {
+            let c = z.cos();
+            (z.sin().div(c), one.div(c.mul(c)))
+        }
+        JuliaFunction::Sinh => (z.sinh(), z.cosh()),
+        JuliaFunction::Cosh => (z.cosh(), z.sinh()),
+        JuliaFunction::Tanh => {
+            let c = z.cosh();
+            (z.sinh().div(c), one.div(c.mul(c)))
+        }
+        JuliaFunction::Asin => {
+            // asin z = -i ln(iz + √(1 - z²)).
+            let root = one.sub(z.mul(z)).sqrt();
+            let v = I.mul(z).add(root).ln().mul(Complex::new(0.0, -1.0));
+            (v, one.div(root))
+        }
+        JuliaFunction::Acos => {
+            // acos z = -i ln(z + i√(1 - z²)).
+            let root = one.sub(z.mul(z)).sqrt();
+            let v = z.add(I.mul(root)).ln().mul(Complex::new(0.0, -1.0));
+            (v, one.div(root).scale(-1.0))
+        }
+        JuliaFunction::Atan => {
+            // atan z = (i/2) ln((i + z)/(i - z)).
+            let v = I.add(z).div(I.sub(z)).ln().mul(Complex::new(0.0, 0.5));
+            (v, one.div(one.add(z.mul(z))))
+        }
+        JuliaFunction::Asinh => {
+            let root = z.mul(z).add(one).sqrt();
+            (z.add(root).ln(), one.div(root))
+        }
+        JuliaFunction::Acosh => {
+            let root = z.add(one).sqrt().mul(z.sub(one).sqrt());
+            (z.add(root).ln(), one.div(root))
+        }
+        JuliaFunction::Atanh => {
+            let v = one.add(z).div(one.sub(z)).ln().scale(0.5);
+            (v, one.div(one.sub(z.mul(z))))
+        }
+        JuliaFunction::Pwr(re, im) => {
+            // z^w = exp(w ln z); its derivative w z^w / z.
+            let w = Complex::new(re, im);
+            let v = w.mul(z.ln()).exp();
+            (v, w.mul(v).div(z))
+        }
+    }
+}
+
+/// The two complex planes of a hypercomplex number.
+fn split(h: DVec4) -> (Complex, Complex) {
+    (
+        Complex::new(h.x - h.w, h.y + h.z),
+        Complex::new(h.x + h.w, h.y - h.z),
+    )
+}
+
+/// The hypercomplex number with the complex planes `a` and `b`.
+fn merge(a: Complex, b: Complex) -> DVec4 {
+    DVec4::new(
+        0.5 * (a.re + b.re),
+        0.5 * (a.im + b.im),
+        0.5 * (a.im - b.im),
+        0.5 * (b.re - a.re),
+    )
+}
+
+/// The squared 4-D norm of the number with complex planes `a` and `b`.
+fn merged_norm(a: Complex, b: Complex) -> f64 {
+    merge(a, b).length_squared()
+}
+
+/// The nearest crossing of a julia fractal as a root.
+pub fn first_root(julia: &Julia, ray: &Ray, tmin: f64, tmax: f64) -> Option<Root> {
+    let mut t = [0.0];
+    (julia.crossings(ray, tmin, tmax, true, &mut t) == 1).then_some(Root { t: t[0], part: 0 })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn gallery_julia(iterations: u32) -> Julia {
+        Julia::new(
+            DVec4::new(-0.083, 0.0, -0.83, -0.025),
+            JuliaAlgebra::Quaternion,
+            JuliaFunction::Sqr,
+            iterations,
+            50.0,
+            DVec4::new(0.0, 0.0, 0.0, 1.0),
+            0.15,
+        )
+    }
+
+    #[test]
+    fn a_ray_through_the_middle_hits_and_the_normal_faces_it() {
+        let julia = gallery_julia(8);
+        let ray = Ray::new(DVec3::new(0.0, 0.0, -3.0), DVec3::Z);
+        let hit = first_root(&julia, &ray, 0.0, f64::INFINITY).expect("a hit");
+        let p = ray.at(hit.t);
+        assert!(julia.inside_point(p + DVec3::Z * 1e-6), "{p}");
+        assert!(!julia.inside_point(p - DVec3::Z * 1e-3), "{p}");
+        assert!(julia.normal(p).dot(ray.direction) < 0.0);
+        // A ray past the bounding sphere misses.
+        let away = Ray::new(DVec3::new(3.0, 0.0, -3.0), DVec3::Z);
+        assert!(first_root(&julia, &away, 0.0, f64::INFINITY).is_none());
+    }
+
+    #[test]
+    fn extremes_of_iteration_give_finite_answers() {
+        for iterations in [1, 200] {
+            let julia = gallery_julia(iterations);
+            for k in 0..50 {
+                let y = -1.5 + 0.06 * f64::from(k);
+                let ray = Ray::new(DVec3::new(0.1, y, -3.0), DVec3::new(0.01, 0.0, 1.0));
+                if let Some(hit) = first_root(&julia, &ray, 0.0, f64::INFINITY) {
+                    assert!(hit.t.is_finite());
+                    assert!(julia.normal(ray.at(hit.t)).is_finite());
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn hypercomplex_functions_stay_finite() {
+        use JuliaFunction::*;
+        for f in [
+            Sqr,
+            Cube,
+            Reciprocal,
+            Exp,
+            Ln,
+            Sin,
+            Asin,
+            Cos,
+            Acos,
+            Tan,
+            Atan,
+            Sinh,
+            Asinh,
+            Cosh,
+            Acosh,
+            Tanh,
+            Atanh,
+            Pwr(2.0, 0.5),
+        ] {
+            let julia = Julia::new(
+                DVec4::new(0.4, 0.2, 0.1, 0.0),
+                JuliaAlgebra::Hypercomplex,
+                f,
+                20,
+                20.0,
+                DVec4::new(0.0, 0.0, 0.0, 1.0),
+                0.0,
+            );
+            let ray = Ray::new(DVec3::new(0.05, 0.02, -5.0), DVec3::Z);
+            let mut t = [0.0; 4];
+            let n = julia.crossings(&ray, 0.0, f64::INFINITY, false, &mut t);
+            for &t in &t[..n] {
+                assert!(t.is_finite(), "{f:?}");
+                assert!(!julia.normal(ray.at(t)).is_nan(), "{f:?}");
+            }
+        }
+    }
+}

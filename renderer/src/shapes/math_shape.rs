@@ -1,0 +1,217 @@
+//! The mathematical shapes behind one variant of [`super::Shape`]: their runtime forms
+//! built from the scene's parameters, and the dispatch of ray queries to them. Unlike the
+//! simple shapes they may take many steps to find a crossing, so they also answer "the
+//! nearest crossing in an interval" directly, which lets them stop early.
+
+use super::isosurface::{FieldFunction, GradientRecord, Isosurface};
+use super::julia::{self, Julia};
+use super::poly::Poly;
+use super::sphere_sweep::SphereSweep;
+use super::{Root, Roots};
+use crate::bounds::Aabb;
+use crate::ray::Ray;
+use analysis::scene::{self, Origin};
+use glam::{DAffine3, DVec3};
+use std::sync::Arc;
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum MathShape {
+    Poly(Poly),
+    Isosurface(Isosurface),
+    Julia(Julia),
+    SphereSweep(SphereSweep),
+}
+
+/// Something a shape found out while rendering that the scene's author should hear, as
+/// POV-Ray tells it after the render (an isosurface's max_gradient).
+#[derive(Debug, Clone)]
+pub struct ShapeReport {
+    pub origin: Origin,
+    record: Arc<GradientRecord>,
+    max_gradient: f64,
+    evaluate: bool,
+}
+
+impl ShapeReport {
+    /// The warning, if the render gave reason for one.
+    pub fn message(&self) -> Option<String> {
+        super::isosurface::gradient_warning(&self.record, self.max_gradient, self.evaluate)
+    }
+}
+
+/// The runtime shape of a mathematical scene shape with its frame; `Ok(None)` when the
+/// shape has no surface at all.
+pub fn build(
+    object: &scene::Object,
+    reports: &mut Vec<ShapeReport>,
+) -> Result<Option<(MathShape, DAffine3)>, String> {
+    let identity = DAffine3::IDENTITY;
+    let built: Result<Option<(MathShape, DAffine3)>, String> = match &object.shape {
+        scene::Shape::Polynomial(p) => {
+            let terms = p.terms.iter().map(|t| (t.powers, t.coefficient)).collect();
+            Ok(Some((
+                MathShape::Poly(Poly {
+                    order: p.order as usize,
+                    terms,
+                    sturm: p.sturm,
+                    region: bounded_region(object),
+                }),
+                identity,
+            )))
+        }
+        scene::Shape::Isosurface(iso) => {
+            let record = Arc::new(GradientRecord::default());
+            reports.push(ShapeReport {
+                origin: object.origin.clone(),
+                record: record.clone(),
+                max_gradient: iso.max_gradient,
+                evaluate: iso.evaluate.is_some(),
+            });
+            let sign = if iso.polarity { -1.0 } else { 1.0 };
+            Ok(Some((
+                MathShape::Isosurface(Isosurface {
+                    function: FieldFunction::new(&iso.function),
+                    container: iso.container,
+                    threshold: sign * iso.threshold,
+                    accuracy: iso.accuracy,
+                    max_gradient: iso.max_gradient,
+                    evaluate: iso.evaluate,
+                    closed: !iso.open,
+                    max_trace: iso.max_trace,
+                    sign,
+                    record,
+                }),
+                identity,
+            )))
+        }
+        scene::Shape::JuliaFractal(j) => Ok(Some((
+            MathShape::Julia(Julia::new(
+                j.parameter,
+                j.algebra,
+                j.function,
+                j.max_iteration,
+                j.precision,
+                j.slice,
+                j.slice_distance,
+            )),
+            identity,
+        ))),
+        scene::Shape::SphereSweep(s) => Ok(SphereSweep::new(s.kind, &s.spheres, s.tolerance)
+            .map(|sweep| (MathShape::SphereSweep(sweep), identity))),
+        other => Err(format!("not supported yet: {}", shape_name(other))),
+    };
+    built
+}
+
+/// The keyword of a shape, for messages.
+fn shape_name(shape: &scene::Shape) -> &'static str {
+    match shape {
+        scene::Shape::Parametric(_) => "parametric",
+        scene::Shape::Lathe(_) => "lathe",
+        scene::Shape::Sor(_) => "sor",
+        scene::Shape::Prism(_) => "prism",
+        scene::Shape::Blob(_) => "blob",
+        scene::Shape::Superellipsoid { .. } => "superellipsoid",
+        scene::Shape::Ovus { .. } => "ovus",
+        scene::Shape::Lemon(_) => "lemon",
+        scene::Shape::HeightField(_) => "height_field",
+        scene::Shape::Text(_) => "text",
+        _ => "this shape",
+    }
+}
+
+/// The box, in the shape's own frame, of a `bounded_by` made of spheres and boxes; the
+/// polynomial's roots are only looked for inside it.
+fn bounded_region(object: &scene::Object) -> Option<Aabb> {
+    if object.bounded_by.is_empty() {
+        return None;
+    }
+    let to_local = object.transform.matrix.inverse();
+    let mut region = Aabb::INFINITE;
+    for bound in &object.bounded_by {
+        let frame = to_local * bound.transform.matrix;
+        let b = match &bound.shape {
+            scene::Shape::Sphere { center, radius } => {
+                let c = frame.transform_point3(*center);
+                let m = frame.matrix3;
+                let extent = DVec3::new(m.row(0).length(), m.row(1).length(), m.row(2).length())
+                    * radius.abs();
+                Aabb::new(c - extent, c + extent)
+            }
+            scene::Shape::Box { corner1, corner2 } => {
+                Aabb::new(*corner1, *corner2).transformed(&frame)
+            }
+            _ => return None,
+        };
+        region = region.intersection(&b);
+    }
+    region.is_finite().then_some(region)
+}
+
+impl MathShape {
+    /// Every crossing, as many as fit.
+    pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
+        match self {
+            MathShape::Poly(s) => s.intersect(ray, roots),
+            MathShape::Isosurface(s) => s.intersect(ray, roots),
+            MathShape::Julia(s) => {
+                let mut t = [0.0; Roots::CAPACITY];
+                let n = s.crossings(ray, f64::NEG_INFINITY, f64::INFINITY, false, &mut t);
+                for &t in &t[..n] {
+                    roots.push(t, 0);
+                }
+            }
+            MathShape::SphereSweep(s) => s.intersect(ray, roots),
+        }
+    }
+
+    /// The nearest crossing in `(tmin, tmax)`.
+    pub fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<Root> {
+        let t = match self {
+            MathShape::Poly(s) => s.first_hit(ray, tmin, tmax),
+            MathShape::Isosurface(s) => {
+                let mut roots = Roots::new();
+                s.intersect(ray, &mut roots);
+                return roots
+                    .as_slice()
+                    .iter()
+                    .copied()
+                    .filter(|r| r.t > tmin && r.t < tmax)
+                    .min_by(|a, b| a.t.total_cmp(&b.t));
+            }
+            MathShape::Julia(s) => return julia::first_root(s, ray, tmin, tmax),
+            MathShape::SphereSweep(s) => s.first_hit(ray, tmin, tmax),
+        };
+        t.map(|t| Root { t, part: 0 })
+    }
+
+    pub fn inside(&self, p: DVec3) -> bool {
+        match self {
+            MathShape::Poly(s) => s.inside(p),
+            MathShape::Isosurface(s) => s.inside(p),
+            MathShape::Julia(s) => s.inside_point(p),
+            MathShape::SphereSweep(s) => s.inside(p),
+        }
+    }
+
+    pub fn normal(&self, p: DVec3, part: u8) -> DVec3 {
+        match self {
+            MathShape::Poly(s) => s.normal(p),
+            MathShape::Isosurface(s) => s.normal(p, part),
+            MathShape::Julia(s) => s.normal(p),
+            MathShape::SphereSweep(s) => s.normal(p),
+        }
+    }
+
+    pub fn bounds(&self) -> Aabb {
+        match self {
+            MathShape::Poly(s) => s.bounds(),
+            MathShape::Isosurface(s) => {
+                let (a, b) = s.bounds();
+                Aabb::new(a, b)
+            }
+            MathShape::Julia(s) => Aabb::new(DVec3::splat(-s.radius), DVec3::splat(s.radius)),
+            MathShape::SphereSweep(s) => s.bounds(),
+        }
+    }
+}
