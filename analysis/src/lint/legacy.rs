@@ -29,8 +29,10 @@ fn replacement(kind: SyntaxKind) -> Option<&'static str> {
 pub fn check(workspace: &Workspace) -> Vec<Diagnostic> {
     let mut warnings = Vec::new();
     for file in workspace.user_files() {
-        for token in file
-            .root
+        let Some(root) = &file.root else {
+            continue;
+        };
+        for token in root
             .descendants_with_tokens()
             .filter_map(|e| e.into_token())
         {
@@ -40,8 +42,7 @@ pub fn check(workspace: &Workspace) -> Vec<Diagnostic> {
                 );
             }
         }
-        for include in file
-            .root
+        for include in root
             .descendants()
             .filter(|node| node.kind() == SyntaxKind::INCLUDE)
         {

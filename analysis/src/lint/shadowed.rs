@@ -14,7 +14,7 @@ pub fn check(workspace: &Workspace) -> Vec<Diagnostic> {
     };
     let mut globals: HashMap<&str, (&str, &Definition)> = HashMap::new();
     for file in &workspace.files {
-        for definition in &file.definitions {
+        for definition in file.definitions.iter() {
             let global = match definition.kind {
                 DefinitionKind::Declare => !definition.in_macro,
                 DefinitionKind::Macro => true,

@@ -17,8 +17,10 @@ pub fn check(workspace: &Workspace) -> Vec<Diagnostic> {
         .collect();
     let mut warnings = Vec::new();
     for file in workspace.user_files() {
-        for token in file
-            .root
+        let Some(root) = &file.root else {
+            continue;
+        };
+        for token in root
             .descendants_with_tokens()
             .filter_map(|e| e.into_token())
             .filter(|token| token.kind() == SyntaxKind::IDENT)

@@ -2,8 +2,8 @@
 //! transitively, each parsed once, with the facts the lints share about its names.
 
 use crate::files::FileSource;
-use std::collections::{BTreeMap, HashSet};
-use std::sync::Arc;
+use std::collections::{BTreeMap, HashMap, HashSet};
+use std::sync::{Arc, Mutex, OnceLock};
 use syntax::{SyntaxKind, SyntaxNode, TextRange};
 
 /// Where a file came from, which decides what is reported in it: the standard includes
@@ -45,10 +45,22 @@ pub struct FileFacts {
     pub name: String,
     pub origin: Origin,
     pub text: Arc<str>,
-    pub root: SyntaxNode,
-    pub definitions: Vec<Definition>,
+    /// The syntax tree, kept for the user's files only: the lints read the standard
+    /// includes' names alone, which are parsed once per process.
+    pub root: Option<SyntaxNode>,
+    pub definitions: Arc<[Definition]>,
     /// Every identifier that is not a definition, by name and place.
-    pub uses: Vec<(String, TextRange)>,
+    pub uses: Arc<[(String, TextRange)]>,
+    /// The names of the files it includes by a literal name.
+    pub includes: Arc<[String]>,
+}
+
+/// What [`FileFacts`] knows apart from the tree, shareable between threads.
+#[derive(Debug)]
+struct NameFacts {
+    definitions: Arc<[Definition]>,
+    uses: Arc<[(String, TextRange)]>,
+    includes: Arc<[String]>,
 }
 
 /// The scene and the files it includes, in the order first met.
@@ -70,6 +82,8 @@ impl Workspace {
                 continue;
             }
             let (text, origin) = match source.read(&name) {
+                // POV-Ray's own includes, found on a library path, are not the user's either.
+                Some(text) if crate::stdinc::get(&name).is_some() => (text, Origin::Standard),
                 Some(text) => (text, origin),
                 None => match crate::stdinc::get(&name) {
                     Some(text) => (Arc::from(text), Origin::Standard),
@@ -78,13 +92,13 @@ impl Workspace {
             };
             let facts = FileFacts::new(name, origin, text);
             // Reversed, so that the first include is looked at first.
-            for include in literal_includes(&facts.root).into_iter().rev() {
+            for include in facts.includes.iter().rev() {
                 let origin = if origin == Origin::Standard {
                     Origin::Standard
                 } else {
                     Origin::User
                 };
-                pending.push((include, origin));
+                pending.push((include.clone(), origin));
             }
             files.push(facts);
         }
@@ -106,7 +120,7 @@ impl Workspace {
     pub fn use_counts(&self) -> BTreeMap<&str, usize> {
         let mut counts = BTreeMap::new();
         for file in &self.files {
-            for (name, _) in &file.uses {
+            for (name, _) in file.uses.iter() {
                 *counts.entry(name.as_str()).or_default() += 1;
             }
         }
@@ -124,7 +138,50 @@ impl FileFacts {
     }
 
     pub fn new(name: String, origin: Origin, text: Arc<str>) -> FileFacts {
-        let root = syntax::parse(&text).syntax_node();
+        let (root, facts) = if origin == Origin::Standard {
+            (None, standard_facts(&name, &text))
+        } else {
+            let root = syntax::parse(&text).syntax_node();
+            let facts = NameFacts::of(&root);
+            (Some(root), Arc::new(facts))
+        };
+        FileFacts {
+            name,
+            origin,
+            text,
+            root,
+            definitions: facts.definitions.clone(),
+            uses: facts.uses.clone(),
+            includes: facts.includes.clone(),
+        }
+    }
+}
+
+/// The facts of a standard include, parsed once per process: a `check` over hundreds of
+/// scenes reads `colors.inc` and its friends for every one.
+/// Keyed by name and a hash of the text, since the bundled `colors.inc` and the one of a
+/// POV-Ray installation differ.
+fn standard_facts(name: &str, text: &str) -> Arc<NameFacts> {
+    type Cache = Mutex<HashMap<(String, u64), Arc<NameFacts>>>;
+    static CACHE: OnceLock<Cache> = OnceLock::new();
+    let key = (name.to_owned(), {
+        let mut hasher = std::hash::DefaultHasher::new();
+        std::hash::Hash::hash(text, &mut hasher);
+        std::hash::Hasher::finish(&hasher)
+    });
+    let cache = CACHE.get_or_init(Mutex::default);
+    if let Some(facts) = cache.lock().ok().and_then(|c| c.get(&key).cloned()) {
+        return facts;
+    }
+    let facts = Arc::new(NameFacts::of(&syntax::parse(text).syntax_node()));
+    if let Ok(mut cache) = cache.lock() {
+        cache.insert(key, facts.clone());
+    }
+    facts
+}
+
+impl NameFacts {
+    fn of(root: &SyntaxNode) -> NameFacts {
         let mut definitions = Vec::new();
         let mut uses = Vec::new();
         for token in root
@@ -148,13 +205,10 @@ impl FileFacts {
                 None => uses.push((name, token.text_range())),
             }
         }
-        FileFacts {
-            name,
-            origin,
-            text,
-            root,
-            definitions,
-            uses,
+        NameFacts {
+            definitions: definitions.into(),
+            uses: uses.into(),
+            includes: literal_includes(root).into(),
         }
     }
 }
