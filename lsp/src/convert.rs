@@ -127,6 +127,17 @@ pub fn base64(bytes: &[u8]) -> String {
     out
 }
 
+/// The one diagnostic of a document whose check failed inside Povrayst itself.
+pub fn internal_error(cause: &str) -> lsp::Diagnostic {
+    lsp::Diagnostic {
+        range: Range::default(),
+        severity: Some(DiagnosticSeverity::ERROR),
+        source: Some("povrayst".to_owned()),
+        message: format!("povrayst could not check this file (a bug in povrayst): {cause}"),
+        ..lsp::Diagnostic::default()
+    }
+}
+
 /// Lint findings as hints the editor fades (unused) or strikes through (legacy).
 pub fn lints(snapshot: &Snapshot, part: &Part, lints: Vec<Lint>) -> Vec<lsp::Diagnostic> {
     lints

@@ -8,6 +8,15 @@
 //! their feature on a blocking thread, where a panic becomes an error answer and a
 //! cancellation a "content modified" one. After each batch of edits the main loop starts
 //! a diagnostics job on its own snapshot, and a publisher task sends the results in order.
+//!
+//! For clients: documents with the language id `povray` (or a `.pov`, `.inc`, `.mcr`
+//! name) are scenes; `typst` documents (`.typ`) are served inside their ```` ```povray ````
+//! blocks only. `initializationOptions` and `workspace/didChangeConfiguration` take
+//! `{"libraryPaths": ["/usr/share/povray-3.7/include"]}` (POV-Ray's `+L`). Two requests of
+//! our own: `povrayst/render` with `{textDocument, width, height, position?}` answers
+//! `{png, width, height}` (base64 PNG) or an error carrying `povrayst check`'s report;
+//! `povrayst/crashTest` panics on purpose, to show a failing request does not stop the
+//! server.
 
 mod bundled;
 mod convert;

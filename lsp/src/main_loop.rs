@@ -94,6 +94,8 @@ struct MainLoop {
     world: Arc<World>,
     /// Whether documents or files changed since the world was last rebuilt.
     dirty: bool,
+    /// Whether documents changed since their includes were last loaded.
+    includes_stale: bool,
     /// Whether the files map changed since it was last given to the project.
     files_changed: bool,
     generation: u64,
@@ -127,6 +129,7 @@ impl MainLoop {
             bundled,
             world,
             dirty: false,
+            includes_stale: false,
             files_changed: false,
             generation: 0,
             publisher,
@@ -136,17 +139,30 @@ impl MainLoop {
 
     fn run(mut self, receiver: Receiver<Event>) {
         while let Ok(event) = receiver.recv() {
-            let mut changed = self.handle(event);
+            let mut changed = self.handle_guarded(event);
             // Take every event already waiting before checking again: a burst of edits
             // costs one diagnostics run.
             while let Ok(event) = receiver.try_recv() {
-                changed |= self.handle(event);
+                changed |= self.handle_guarded(event);
             }
             if changed {
-                self.flush();
+                // Diagnostics first: the job checks on one core while this thread looks
+                // for includes to load on the other. Loading one is a write, which
+                // cancels the job and starts a new one.
+                self.flush_world();
                 self.schedule_diagnostics();
+                if self.load_includes() {
+                    self.flush_world();
+                    self.schedule_diagnostics();
+                }
             }
         }
+    }
+
+    /// [`MainLoop::handle`], surviving a bug in it: the event is lost (the panic hook has
+    /// said why), the loop goes on.
+    fn handle_guarded(&mut self, event: Event) -> bool {
+        std::panic::catch_unwind(AssertUnwindSafe(|| self.handle(event))).unwrap_or(true)
     }
 
     /// Applies one event; says whether diagnostics may have changed.
@@ -229,6 +245,7 @@ impl MainLoop {
             }
         }
         self.dirty = true;
+        self.includes_stale = true;
         true
     }
 
@@ -339,11 +356,15 @@ impl MainLoop {
             .to(revision + 1);
     }
 
-    /// Gives the project its new file list and rebuilds what snapshots share.
+    /// Loads the includes of changed documents, gives the project its new file list and
+    /// rebuilds what snapshots share: everything a request must see.
     fn flush(&mut self) {
-        if self.dirty {
-            self.load_includes();
-        }
+        self.load_includes();
+        self.flush_world();
+    }
+
+    /// Gives the project its new file list and rebuilds what snapshots share.
+    fn flush_world(&mut self) {
         self.set_project_files();
         if !self.dirty {
             return;
@@ -380,8 +401,13 @@ impl MainLoop {
 
     /// Loads the disk files that open documents include, directly or through other
     /// includes, before any request can ask about them. Each round loads the includes the
-    /// previous round made reachable.
-    fn load_includes(&mut self) {
+    /// previous round made reachable. Says whether it loaded any.
+    fn load_includes(&mut self) -> bool {
+        if !self.includes_stale {
+            return false;
+        }
+        self.includes_stale = false;
+        let mut any = false;
         let parts: Vec<File> = self
             .parts
             .values()
@@ -390,10 +416,18 @@ impl MainLoop {
             .collect();
         loop {
             self.set_project_files();
-            let mut unloaded: Vec<PathBuf> = parts
-                .iter()
-                .flat_map(|&file| db::unloaded_includes(&self.db, file))
-                .collect();
+            // A bug in a query must not take the main loop down with it: the document
+            // then just lacks its includes, and the diagnostics job reports the failure.
+            let db = &self.db;
+            let found = std::panic::catch_unwind(AssertUnwindSafe(|| {
+                parts
+                    .iter()
+                    .flat_map(|&file| db::unloaded_includes(db, file))
+                    .collect::<Vec<PathBuf>>()
+            }));
+            let Ok(mut unloaded) = found else {
+                return any;
+            };
             unloaded.sort();
             unloaded.dedup();
             let mut loaded = false;
@@ -404,8 +438,10 @@ impl MainLoop {
                 }
             }
             if !loaded {
-                return;
+                return any;
             }
+            any = true;
+            self.dirty = true;
         }
     }
 
@@ -447,13 +483,24 @@ fn publish_diagnostics(snapshot: Snapshot, generation: u64, publisher: &Publishe
             let mut diagnostics = Vec::new();
             let mut unloaded = Vec::new();
             for part in &view.parts {
-                let checked = db::check_file(&snapshot.db, part.file);
+                // The lints need the tree and the names; the check runs the evaluator.
+                // Neither needs the other, so they run side by side.
+                let lint_db = snapshot.db.clone();
+                let (checked, lints) = std::thread::scope(|scope| {
+                    let lints = scope.spawn(move || {
+                        analysis::ide::diagnostics::lints(
+                            &lint_db,
+                            part.file,
+                            &DiagnosticsConfig::default(),
+                        )
+                    });
+                    let checked = db::check_file(&snapshot.db, part.file);
+                    let lints = lints
+                        .join()
+                        .unwrap_or_else(|payload| std::panic::resume_unwind(payload));
+                    (checked, lints)
+                });
                 diagnostics.extend(convert::diagnostics(&snapshot, part, checked));
-                let lints = analysis::ide::diagnostics::lints(
-                    &snapshot.db,
-                    part.file,
-                    &DiagnosticsConfig::default(),
-                );
                 diagnostics.extend(convert::lints(&snapshot, part, lints));
                 unloaded.extend(checked.unloaded.iter().cloned());
             }
@@ -470,8 +517,16 @@ fn publish_diagnostics(snapshot: Snapshot, generation: u64, publisher: &Publishe
                 });
             }
             Err(payload) if payload.is::<salsa::Cancelled>() => return Vec::new(),
-            // The panic hook has said what went wrong; the other documents still count.
-            Err(_) => {}
+            // A bug of ours: say so in the document rather than leave stale diagnostics.
+            // The panic hook has printed the details on stderr.
+            Err(payload) => publisher.publish(Publication {
+                uri: uri.clone(),
+                version: Some(view.version),
+                generation,
+                diagnostics: vec![convert::internal_error(&crate::server::panic_message(
+                    payload.as_ref(),
+                ))],
+            }),
         }
     }
     unloaded.sort();

@@ -364,3 +364,35 @@ fn editing_aids_answer_over_the_protocol() {
     assert!(!edits.as_array().unwrap().is_empty());
     assert_eq!(server.stop(), Some(0));
 }
+
+#[test]
+fn render_previews_a_scene_as_a_png() {
+    let dir = scene_dir(&[]);
+    let (mut server, _) = LspProcess::start(dir.path(), Value::Null);
+    let scene = uri(dir.path()) + "/scene.pov";
+    server.open(
+        &scene,
+        "povray",
+        1,
+        "#version 3.7;\ncamera { location <0, 0, -4> look_at 0 }\nlight_source { <3, 4, -5> rgb 1 }\nsphere { 0, 1 pigment { rgb <1, 0.5, 0.2> } }\n",
+    );
+    let mut params = whole(&scene);
+    params["width"] = json!(16);
+    params["height"] = json!(12);
+    let preview = server.request("povrayst/render", params.clone()).unwrap();
+    assert_eq!(
+        (preview["width"].as_i64(), preview["height"].as_i64()),
+        (Some(16), Some(12))
+    );
+    // Base64 of the PNG signature.
+    assert!(preview["png"].as_str().unwrap().starts_with("iVBORw0KGgo"));
+
+    server.edit(&scene, 2, (3, 12), (3, 12), "Raduis");
+    let error = server.request("povrayst/render", params).unwrap_err();
+    assert!(
+        error.message.starts_with("scene.pov:4:13: error:"),
+        "{}",
+        error.message
+    );
+    assert_eq!(server.stop(), Some(0));
+}

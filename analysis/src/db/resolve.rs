@@ -35,19 +35,27 @@ struct Resolver<'db> {
     file: File,
     /// Symbol indices by the number of their defining name.
     by_name_index: HashMap<u32, u32>,
+    /// Symbol indices by name, in text order, so that a use looks only at its namesakes.
+    by_name: HashMap<&'db str, Vec<usize>>,
 }
 
 impl<'db> Resolver<'db> {
     fn new(db: &'db dyn Db, file: File) -> Self {
-        let by_name_index = file_symbols(db, file)
+        let symbols = file_symbols(db, file);
+        let by_name_index = symbols
             .iter()
             .enumerate()
             .map(|(index, symbol)| (symbol.name_index, index as u32))
             .collect();
+        let mut by_name: HashMap<&'db str, Vec<usize>> = HashMap::new();
+        for (index, symbol) in symbols.iter().enumerate() {
+            by_name.entry(symbol.name.as_str()).or_default().push(index);
+        }
         Resolver {
             db,
             file,
             by_name_index,
+            by_name,
         }
     }
 
@@ -72,39 +80,46 @@ impl<'db> Resolver<'db> {
         let symbols = file_symbols(self.db, self.file);
         let ranges = name_ranges(self.db, self.file);
         let defined_at = |index: usize| ranges[symbols[index].name_index as usize].start();
+        let namesakes: &[usize] = self.by_name.get(name).map_or(&[], Vec::as_slice);
 
         // Inside macros, innermost first: parameters, then the macro's own #locals.
-        for container in self.containers(token) {
-            let mut locals = symbols
+        let containers = if namesakes.iter().any(|&i| symbols[i].container.is_some()) {
+            self.containers(token)
+        } else {
+            Vec::new()
+        };
+        for container in containers {
+            let locals = namesakes
                 .iter()
-                .enumerate()
-                .filter(|(_, s)| s.name == name && s.container == Some(container));
-            if let Some((index, _)) = locals
+                .copied()
+                .filter(|&i| symbols[i].container == Some(container));
+            if let Some(index) = locals
                 .clone()
-                .find(|(_, s)| s.kind == SymbolKind::Parameter)
+                .find(|&i| symbols[i].kind == SymbolKind::Parameter)
             {
                 return Some(self.definition(index as u32));
             }
             let before = locals
                 .clone()
-                .rfind(|(i, _)| defined_at(*i) < offset)
-                .or_else(|| locals.next());
-            if let Some((index, symbol)) = before
-                && symbol.local
+                .rfind(|&i| defined_at(i) < offset)
+                .or_else(|| locals.clone().next());
+            if let Some(index) = before
+                && symbols[index].local
             {
                 return Some(self.definition(index as u32));
             }
         }
 
         // The file's own definitions that are visible everywhere in it.
-        let visible = symbols.iter().enumerate().filter(|(_, s)| {
-            s.name == name && s.kind != SymbolKind::Parameter && (s.container.is_none() || !s.local)
+        let visible = namesakes.iter().copied().filter(|&i| {
+            let s = &symbols[i];
+            s.kind != SymbolKind::Parameter && (s.container.is_none() || !s.local)
         });
         let chosen = visible
             .clone()
-            .rfind(|(i, _)| defined_at(*i) < offset)
+            .rfind(|&i| defined_at(i) < offset)
             .or_else(|| visible.clone().next());
-        if let Some((index, _)) = chosen {
+        if let Some(index) = chosen {
             return Some(self.definition(index as u32));
         }
         include_scope(self.db, self.file).get(name).copied()
