@@ -2,11 +2,13 @@
 # Renders each scene of analysis/stdinc/renders/ with Debian's povray twice, once with
 # POV-Ray's own include files and once with ours, and reports how far the two images
 # differ: the share of pixels that differ at all and the mean and largest difference per
-# channel (0-255).  The texture files are written to give the same look, so this is how
-# the look is checked.
+# channel (0-255).  Where the files must behave alike (screen.inc's placement) the images
+# must agree; where ours are our own designs (the textures) the figures say how far our
+# looks are from POV-Ray's.
 # Textures with crand differ from run to run even in POV-Ray; --baseline renders with
-# POV-Ray's files twice, to show how much.
-# Usage: analysis/stdinc/render-with-povray.sh [--baseline] [SCENE.pov...]
+# POV-Ray's files twice, to show how much.  --keep DIR keeps both images of each scene
+# (DIR/NAME.theirs.ppm and DIR/NAME.ours.ppm), to look at.
+# Usage: analysis/stdinc/render-with-povray.sh [--baseline] [--keep DIR] [SCENE.pov...]
 # (every scene renders at 240x180 without antialiasing)
 set -euo pipefail
 
@@ -14,10 +16,14 @@ here=$(cd "$(dirname "$0")" && pwd)
 std=${POVRAY_INCLUDE_DIR:-/usr/share/povray-3.7/include}
 command -v povray >/dev/null || { echo "render-with-povray.sh: needs povray (apt-get install povray)" >&2; exit 1; }
 ours=$here
-if [ "${1:-}" = --baseline ]; then
-    ours=$std
-    shift
-fi
+keep=""
+while [ $# -gt 0 ]; do
+    case $1 in
+        --baseline) ours=$std; shift ;;
+        --keep) keep=$(mkdir -p "$2" && cd "$2" && pwd); shift 2 ;;
+        *) break ;;
+    esac
+done
 [ $# -gt 0 ] || set -- "$here"/renders/*.pov
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -36,6 +42,7 @@ render() { # render INCLUDE_DIR SCENE OUTPUT
 for scene in "$@"; do
     name=$(basename "$scene" .pov)
     render "$std" "$scene" "$work/$name.theirs.ppm" && render "$ours" "$scene" "$work/$name.ours.ppm" || continue
+    [ -z "$keep" ] || cp "$work/$name.theirs.ppm" "$work/$name.ours.ppm" "$keep"/
     python3 - "$name" "$work/$name.theirs.ppm" "$work/$name.ours.ppm" <<'PY'
 import sys
 

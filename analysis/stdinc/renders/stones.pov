@@ -1,6 +1,8 @@
 #version 3.7;
 // Every texture of stones1.inc and stones2.inc on a box, the translucent ones over a
 // checkered floor.
+// POV-Ray's stones1.inc needs colors.inc first; ours does not.
+#include "colors.inc"
 #include "stones.inc"
 global_settings { assumed_gamma 1 }
 camera { orthographic location <5.5, 20, -4> look_at <5.5, 0, 4.5> right 12 * 4 / 3 * x up 12 * y }
