@@ -2,6 +2,7 @@
 // shows every finding in the Problems panel, including scenes that are not open.
 
 import { execFile } from 'node:child_process';
+import * as fs from 'node:fs';
 import * as path from 'node:path';
 import * as vscode from 'vscode';
 import { CheckFinding, Settings, checkCommand } from './serverConfig';
@@ -32,10 +33,16 @@ export async function checkWorkspace(settings: Settings, collection: vscode.Diag
   const findings = JSON.parse(stdout) as CheckFinding[];
   const byFile = new Map<string, vscode.Diagnostic[]>();
   for (const finding of findings) {
+    // Files found on disk are named by their paths; a bundled standard include by its
+    // bare name, which is no file to show, so its findings go on the Problems panel's
+    // workspace entry instead.
+    const resolved = path.resolve(folders[0], finding.file);
+    const file = fs.existsSync(resolved) ? resolved : folders[0];
     const start = finding.range?.start ?? { line: 1, column: 1 };
     const end = finding.range?.end ?? start;
     const range = new vscode.Range(start.line - 1, start.column - 1, end.line - 1, end.column - 1);
-    const message = [finding.message, ...finding.notes.map((note) => `note: ${note}`)].join('\n');
+    const place = file === resolved ? [] : [`in ${finding.file}`];
+    const message = [finding.message, ...place, ...finding.notes.map((note) => `note: ${note}`)].join('\n');
     const severity =
       finding.severity === 'error' ? vscode.DiagnosticSeverity.Error : vscode.DiagnosticSeverity.Warning;
     const diagnostic = new vscode.Diagnostic(range, message, severity);
@@ -43,8 +50,6 @@ export async function checkWorkspace(settings: Settings, collection: vscode.Diag
     if (finding.code) {
       diagnostic.code = finding.code;
     }
-    // Files found on disk are named by their paths; standard includes by their bare names.
-    const file = path.resolve(folders[0], finding.file);
     byFile.set(file, [...(byFile.get(file) ?? []), diagnostic]);
   }
   collection.clear();
