@@ -1,48 +1,127 @@
-//! Normal perturbation (`normal { }`): bumps that exist only in the lighting. Patterns built
-//! for normals (bumps, dents, wrinkles, ripples, waves) push the normal by vectors of their
-//! own. Every other pattern is sampled, as POV-Ray describes, at the four corners of a
-//! regular tetrahedron of radius `accuracy` around the point, and each corner's direction,
-//! weighted by the value there, is added to the normal, scaled by `-5 bump_size` and by
-//! `0.02 / accuracy` (POV-Ray's calibration): a gentle tilt along the pattern's slope and a
-//! sharp one across its jumps. The push is added in pattern space to the unit normal
-//! there, and the sum carried back to the world like a normal, as POV-Ray's bump scaling
-//! does: scaling a pattern changes where its bumps are, not how steep they look.
+//! Normal perturbation (`normal { }`): bumps that exist only in the lighting, following
+//! POV-Ray's reference. Patterns built for normals push the normal by vectors of their
+//! own: bumps, dents and wrinkles by solid noise, ripples and waves by their wave fronts,
+//! quilted towards the centres of its cubes, facets towards random cell points. Every other
+//! pattern is sampled at the four corners of a regular tetrahedron of radius `accuracy`
+//! around the point (its value reshaped by the `slope_map`, if any), and each corner's
+//! direction, weighted by the value there, is added to the normal, scaled by
+//! `-5 bump_size` and by `0.02 / accuracy`: a gentle tilt along the pattern's slope and a
+//! sharp one across its jumps. A `normal_map` (or the normals listed after a block
+//! pattern) blends the perturbed normals of its entries.
+//!
+//! The push is added in pattern space to the unit normal there, and the sum carried back
+//! to the world like a normal: scaling a pattern changes where its bumps are, not how
+//! steep they look.
 
 use analysis::noise;
-use analysis::pattern::{self, PatternValue};
-use analysis::scene::{self, NormalKind, Pattern, PatternKind};
-use glam::DVec3;
-use std::f64::consts::TAU;
+use analysis::pattern::{self, PatternValue, cells, waves};
+use analysis::scene::{self, BlendMap, NormalKind, Pattern, PatternKind, Warp};
+use glam::{DMat3, DVec3};
 
 /// Whether the normal can be evaluated; `Err` names what is missing.
 pub fn check(normal: &scene::Normal) -> Result<(), String> {
     match &normal.kind {
         NormalKind::Pattern { pattern, .. } => match pattern.kind {
-            PatternKind::Ripples | PatternKind::Waves => Ok(()),
+            PatternKind::Facets { .. } => Ok(()),
             _ => pattern::check(pattern),
         },
-        NormalKind::Map { .. } => Err("not supported yet: normal_map".into()),
+        NormalKind::Map { pattern, map } => {
+            pattern::check(pattern)?;
+            map.entries.iter().try_for_each(|(_, n)| check(n))
+        }
     }
 }
 
 /// The perturbed unit normal at world point `p` for surface normal `n`.
 pub fn perturb(normal: &scene::Normal, p: DVec3, n: DVec3) -> DVec3 {
-    let NormalKind::Pattern { pattern, bump_size } = &normal.kind else {
-        return n;
+    let perturbed = match &normal.kind {
+        NormalKind::Pattern {
+            pattern,
+            bump_size,
+            slope_map,
+        } => {
+            if *bump_size == 0.0 {
+                return n;
+            }
+            bumped(
+                pattern,
+                *bump_size,
+                slope_map.as_ref(),
+                normal.accuracy,
+                p,
+                n,
+            )
+        }
+        NormalKind::Map { pattern, map } => mapped(pattern, map, p, n),
     };
-    if *bump_size == 0.0 {
+    if perturbed == DVec3::ZERO || !perturbed.is_finite() {
+        n
+    } else {
+        perturbed
+    }
+}
+
+/// A normal map: the entries either side of the pattern's value, each perturbing the
+/// normal, blended by their weights.
+fn mapped(pattern: &Pattern, map: &BlendMap<scene::Normal>, p: DVec3, n: DVec3) -> DVec3 {
+    let entries = &map.entries;
+    if entries.is_empty() {
         return n;
     }
-    let to_pattern = &pattern.transform.inverse;
-    let local = to_pattern.transform_point3(p);
-    // Normals go into pattern space by the transposed forward matrix and back by the
-    // transposed inverse.
-    let local_normal = (pattern.transform.matrix.matrix3.transpose() * n).normalize_or_zero();
-    let push = match pattern.kind {
-        PatternKind::Bumps => noise::vector(local) * *bump_size,
+    let (a, b, t) = match pattern::evaluate(pattern, p) {
+        PatternValue::Block(i) => {
+            let i = i.min(entries.len() - 1);
+            (i, i, 0.0)
+        }
+        PatternValue::Blend(v) => pattern::blend_position(entries.iter().map(|(at, _)| *at), v),
+    };
+    let lower = perturb(&entries[a].1, p, n);
+    if a == b || t == 0.0 {
+        return lower;
+    }
+    let upper = perturb(&entries[b].1, p, n);
+    (lower * (1.0 - t) + upper * t).normalize_or_zero()
+}
+
+/// The matrix taking world normals into the pattern's warped space: the pattern's
+/// transform and each transformation among its warps, as POV-Ray carries normals through
+/// warps (the geometric warps leave normals alone).
+fn into_pattern_space(pattern: &Pattern) -> DMat3 {
+    let mut m = pattern.transform.matrix.matrix3.transpose();
+    for warp in pattern.warps.iter().rev() {
+        if let Warp::Transform(t) = warp {
+            m = t.matrix.matrix3.transpose() * m;
+        }
+    }
+    m
+}
+
+fn out_of_pattern_space(pattern: &Pattern) -> DMat3 {
+    let mut m = pattern.transform.inverse.matrix3.transpose();
+    for warp in pattern.warps.iter().rev() {
+        if let Warp::Transform(t) = warp {
+            m *= t.inverse.matrix3.transpose();
+        }
+    }
+    m
+}
+
+/// A pattern used as bumps: the push in pattern space added to the unit normal there.
+fn bumped(
+    pattern: &Pattern,
+    bump_size: f64,
+    slope_map: Option<&BlendMap<(f64, f64)>>,
+    accuracy: f64,
+    p: DVec3,
+    n: DVec3,
+) -> DVec3 {
+    let local = pattern::warped(pattern, pattern.transform.inverse.transform_point3(p));
+    let local_normal = (into_pattern_space(pattern) * n).normalize_or_zero();
+    let bumped = match pattern.kind {
+        PatternKind::Bumps => local_normal + noise::vector(local) * bump_size,
         PatternKind::Dents => {
             let depth = noise::noise(local).powi(3);
-            noise::vector(local) * (-bump_size * depth)
+            local_normal + noise::vector(local) * (-bump_size * depth)
         }
         PatternKind::Wrinkles => {
             let mut v = DVec3::ZERO;
@@ -51,25 +130,41 @@ pub fn perturb(normal: &scene::Normal, p: DVec3, n: DVec3) -> DVec3 {
                 v += (noise::vector(local * scale) / scale).abs();
                 scale *= 2.0;
             }
-            v * *bump_size
+            local_normal + v * bump_size
         }
-        PatternKind::Ripples | PatternKind::Waves => waves(pattern, local) * *bump_size,
+        PatternKind::Ripples | PatternKind::Waves => {
+            let own = matches!(pattern.kind, PatternKind::Waves);
+            local_normal + waves::push(local, pattern.frequency, pattern.phase, own) * bump_size
+        }
+        PatternKind::Quilted { control0, control1 } => {
+            local_normal + pattern::quilt_offset(local, control0, control1) * bump_size
+        }
+        PatternKind::Facets {
+            coords,
+            size,
+            metric,
+        } => facets(local, local_normal, coords, size, metric),
         _ => {
-            let accuracy = if normal.accuracy > 0.0 {
-                normal.accuracy
-            } else {
-                0.02
-            };
+            let accuracy = if accuracy > 0.0 { accuracy } else { 0.02 };
             let amount = -5.0 * bump_size * (0.02 / accuracy);
-            pyramid(pattern, local, accuracy) * amount
+            local_normal + pyramid(pattern, slope_map, local, accuracy) * amount
         }
     };
-    let perturbed = (to_pattern.matrix3.transpose() * (local_normal + push)).normalize_or_zero();
-    if perturbed == DVec3::ZERO || !perturbed.is_finite() {
-        n
-    } else {
-        perturbed
+    (out_of_pattern_space(pattern) * bumped).normalize_or_zero()
+}
+
+/// `facets`: the normal turned towards the nearest random cell point of the normal itself
+/// scaled by `1/size`, or, with `coords`, tilted by solid noise at the nearest cell point
+/// of the surface position, so that each cell shows one flat facet.
+fn facets(p: DVec3, normal: DVec3, coords: f64, size: f64, metric: f64) -> DVec3 {
+    let scale = if size < 1e-6 { 1e6 } else { 1.0 / size };
+    let at = if coords != 0.0 { p } else { normal } * scale;
+    let nearest = cells::nearest_nucleus(at, metric);
+    if coords == 0.0 {
+        return nearest;
     }
+    let tilt = noise::vector(nearest);
+    normal + (tilt - normal * tilt.dot(normal)) * coords
 }
 
 /// The corners of a regular tetrahedron around the origin, one straight up.
@@ -80,49 +175,63 @@ const PYRAMID: [DVec3; 4] = [
     DVec3::new(0.0, 1.0, 0.0),
 ];
 
-/// The sum of the tetrahedron's corner directions weighted by the pattern's value at each
-/// corner, in pattern space.
-fn pyramid(pattern: &Pattern, local: DVec3, h: f64) -> DVec3 {
+/// The sum of the tetrahedron's corner directions weighted by the pattern's value (through
+/// the slope map) at each corner, around a point already through the pattern's warps.
+fn pyramid(
+    pattern: &Pattern,
+    slope_map: Option<&BlendMap<(f64, f64)>>,
+    warped: DVec3,
+    h: f64,
+) -> DVec3 {
     PYRAMID.iter().fold(DVec3::ZERO, |sum, corner| {
-        let value = match pattern::evaluate_local(pattern, local + *corner * h) {
+        let value = match pattern::evaluate_warped(pattern, warped + *corner * h) {
             PatternValue::Blend(v) => v,
             PatternValue::Block(i) => i as f64,
         };
-        sum + *corner * value
+        let height = slope_map.map_or(value, |map| slope_profile(map, value));
+        sum + *corner * height
     })
 }
 
-/// The ten wave sources of ripples and waves: fixed points scattered in the unit cube.
-fn sources() -> &'static [DVec3; 10] {
-    static SOURCES: std::sync::OnceLock<[DVec3; 10]> = std::sync::OnceLock::new();
-    SOURCES.get_or_init(|| {
-        let mut state: u32 = 0x1234_5678;
-        let mut next = move || {
-            state = state.wrapping_mul(1_103_515_245).wrapping_add(12_345);
-            f64::from((state >> 8) & 0xffff) / 65536.0 - 0.5
-        };
-        std::array::from_fn(|_| DVec3::new(next(), next(), next()))
-    })
-}
-
-/// The push of concentric waves around the sources, each a sine of the distance at the
-/// pattern's frequency and phase; waves give each source a frequency of its own and weaken
-/// the faster ones.
-fn waves(pattern: &Pattern, p: DVec3) -> DVec3 {
-    let mut push = DVec3::ZERO;
-    let n = sources().len() as f64;
-    for (i, source) in sources().iter().enumerate() {
-        let d = p - *source;
-        let len = match d.length() {
-            0.0 => 1.0,
-            l => l,
-        };
-        let own = match pattern.kind {
-            PatternKind::Waves => 0.5 + (i as f64 * 0.618_034).fract(),
-            _ => 1.0,
-        };
-        let index = len * pattern.frequency * own + pattern.phase;
-        push += d * ((index * TAU).sin() / own / (len * n));
+/// A value through a `slope_map`: the Hermite cubic between the entries either side, each
+/// entry a height and the slope there.
+fn slope_profile(map: &BlendMap<(f64, f64)>, value: f64) -> f64 {
+    let entries = &map.entries;
+    let (a, b, t) = pattern::blend_position(entries.iter().map(|(at, _)| *at), value);
+    let (h1, s1) = entries[a].1;
+    if a == b {
+        return h1;
     }
-    push
+    let (h2, s2) = entries[b].1;
+    let (t2, t3) = (t * t, t * t * t);
+    t3 * (s1 + s2 + 2.0 * (h1 - h2)) - t2 * (2.0 * s1 + s2 + 3.0 * (h1 - h2)) + t * s1 + h1
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slope_maps_follow_hermite_curves() {
+        let map = BlendMap {
+            entries: vec![(0.0, (0.0, 1.0)), (1.0, (1.0, 1.0))],
+        };
+        // Heights 0 and 1 with slope 1 at both ends: the straight line.
+        for v in [0.0, 0.25, 0.5, 0.9] {
+            assert!((slope_profile(&map, v) - v).abs() < 1e-12);
+        }
+        let bump = BlendMap {
+            entries: vec![(0.0, (0.0, 0.0)), (1.0, (1.0, 0.0))],
+        };
+        assert!((slope_profile(&bump, 0.5) - 0.5).abs() < 1e-12);
+        assert!(slope_profile(&bump, 0.1) < 0.1);
+    }
+
+    #[test]
+    fn facets_turn_normals_to_cell_points() {
+        let n = DVec3::Y;
+        let turned = facets(DVec3::ZERO, n, 0.0, 0.1, 2.0);
+        // The nearest cell point to 10 * y lies within two cells of it.
+        assert!((turned - DVec3::Y * 10.0).length() < 2.0);
+    }
 }

@@ -16,7 +16,9 @@ mod function_body;
 mod light;
 mod macros;
 mod math_shapes;
+mod normal_map;
 mod object;
+mod pattern_head;
 mod rng;
 mod scene_items;
 mod spline;
@@ -26,6 +28,7 @@ mod texture;
 mod tokens;
 mod transform;
 pub mod value;
+mod warp;
 
 use crate::files::{FileSource, Sources};
 use crate::scene::{Camera, GlobalSettings, Light, Object, Scene, Texture};

@@ -21,6 +21,7 @@ fn block_entries(kind: &PatternKind) -> Option<usize> {
         PatternKind::Hexagon => Some(3),
         PatternKind::Square => Some(4),
         PatternKind::Triangular => Some(6),
+        PatternKind::Object(_) => Some(2),
         _ => None,
     }
 }
@@ -76,6 +77,9 @@ impl Evaluator<'_> {
                             entries: Vec::new(),
                         },
                     };
+                    if matches!(pattern.kind, PatternKind::Object(_)) {
+                        self.expect(R_BRACE, "'}'")?;
+                    }
                     texture = Texture::Pattern {
                         pattern: Box::new(pattern),
                         map,
@@ -281,6 +285,9 @@ impl Evaluator<'_> {
                     Some(n) => self.block_pigments(n, &pattern.kind)?,
                     None => default_map(&pattern.kind),
                 };
+                if matches!(pattern.kind, PatternKind::Object(_)) {
+                    self.expect(R_BRACE, "'}'")?;
+                }
                 Pigment::Pattern {
                     pattern: Box::new(pattern),
                     map,
@@ -435,16 +442,19 @@ impl Evaluator<'_> {
                 self.unget(keyword.clone());
                 PatternKind::Function(Arc::new(self.function_value()?))
             }
-            _ => {
-                return Err(
-                    self.unsupported(keyword, &format!("the {} pattern", self.text(keyword)))
-                );
-            }
+            _ => match self.pattern_head(keyword)? {
+                Some(pattern) => pattern,
+                None => {
+                    return Err(
+                        self.unsupported(keyword, &format!("the {} pattern", self.text(keyword)))
+                    );
+                }
+            },
         };
         let mut pattern = Pattern::new(kind);
         pattern.noise_generator = self.settings.noise_generator;
-        // Marble and wood run their maps forth and back unless told otherwise.
-        if matches!(keyword.kind, MARBLE_KW | WOOD_KW) {
+        // Marble, wood and the spirals run their maps forth and back unless told otherwise.
+        if matches!(keyword.kind, MARBLE_KW | WOOD_KW | SPIRAL1_KW | SPIRAL2_KW) {
             pattern.wave = WaveType::Triangle;
         }
         Ok(pattern)
@@ -496,6 +506,9 @@ impl Evaluator<'_> {
 
     /// A modifier of a pattern; false when `token` is not one.
     fn pattern_modifier(&mut self, pattern: &mut Pattern, token: &Token) -> Result<bool> {
+        if self.pattern_parameter(pattern, token)? {
+            return Ok(true);
+        }
         match token.kind {
             kind if Self::starts_transform(kind) => {
                 let t = self.transformation(token)?;
@@ -573,7 +586,7 @@ impl Evaluator<'_> {
                     _ => *solid = true,
                 }
             }
-            WARP_KW => return Err(self.unsupported(token, "warp")),
+            WARP_KW => self.warp(pattern)?,
             EXPONENT_KW | INTERIOR_KW | EXTERIOR_KW => {
                 let PatternKind::Fractal(fractal) = &mut pattern.kind else {
                     return Ok(false);
@@ -581,7 +594,8 @@ impl Evaluator<'_> {
                 if token.kind == EXPONENT_KW {
                     fractal.exponent = self.int()?.clamp(2, 33) as u32;
                 } else {
-                    let kind = self.int()?.clamp(0, 6) as u8;
+                    let most = if token.kind == INTERIOR_KW { 6 } else { 8 };
+                    let kind = self.int()?.clamp(0, most) as u8;
                     self.eat(COMMA)?;
                     let factor = self.float()?;
                     if token.kind == INTERIOR_KW {
@@ -722,6 +736,18 @@ impl Evaluator<'_> {
     /// (`normal { bump_size 2 }` on a plain surface), which perturbs nothing.
     pub fn normal_with(&mut self, base: Option<Normal>) -> Result<Option<Normal>> {
         self.expect(L_BRACE, "'{'")?;
+        let normal = self.normal_inner(base, R_BRACE)?;
+        self.expect(R_BRACE, "'}'")?;
+        Ok(normal)
+    }
+
+    /// The inside of a normal, up to (not including) `end`: `}` for `normal { }`, `]` for
+    /// a normal map entry.
+    pub(super) fn normal_inner(
+        &mut self,
+        base: Option<Normal>,
+        end: SyntaxKind,
+    ) -> Result<Option<Normal>> {
         let first = self.next()?;
         let mut normal = match first.kind {
             IDENT => match first.slot.as_ref().map(|s| s.borrow().clone()) {
@@ -737,19 +763,32 @@ impl Evaluator<'_> {
             BUMP_MAP_KW => return Err(self.unsupported(&first, "bump_map")),
             kind if pattern_keyword(kind) => {
                 let pattern = self.pattern(&first)?;
-                self.eat(COMMA)?;
-                let bump_size = if self.value_follows()? {
-                    self.float()?
-                } else {
-                    0.5
+                let listed = match block_entries(&pattern.kind) {
+                    Some(n) => self.block_normals(&pattern, n)?,
+                    None => None,
                 };
-                Some(Normal {
-                    kind: NormalKind::Pattern {
-                        pattern: Box::new(pattern),
-                        bump_size,
-                    },
-                    accuracy: 0.02,
-                })
+                if matches!(pattern.kind, PatternKind::Object(_)) {
+                    self.expect(R_BRACE, "'}'")?;
+                }
+                match listed {
+                    Some(map) => Some(map),
+                    None => {
+                        self.eat(COMMA)?;
+                        let bump_size = if self.value_follows()? {
+                            self.float()?
+                        } else {
+                            0.5
+                        };
+                        Some(Normal {
+                            kind: NormalKind::Pattern {
+                                pattern: Box::new(pattern),
+                                bump_size,
+                                slope_map: None,
+                            },
+                            accuracy: 0.02,
+                        })
+                    }
+                }
             }
             _ => {
                 self.unget(first);
@@ -758,7 +797,8 @@ impl Evaluator<'_> {
         };
         loop {
             let token = self.next()?;
-            if token.kind == R_BRACE {
+            if token.kind == end {
+                self.unget(token);
                 return Ok(normal);
             }
             if Self::starts_transform(token.kind) {
@@ -769,7 +809,8 @@ impl Evaluator<'_> {
                 continue;
             }
             if matches!(token.kind, SLOPE_MAP_KW | NORMAL_MAP_KW) {
-                return Err(self.unsupported(&token, self.text(&token)));
+                self.normal_map_modifier(&mut normal, &token)?;
+                continue;
             }
             if token.kind == BUMP_SIZE_KW || token.kind == ACCURACY_KW {
                 let value = self.float()?;
@@ -1143,35 +1184,14 @@ fn pigment_entries(map: BlendMap<Colour>) -> BlendMap<Pigment> {
     }
 }
 
-/// The colours a pattern shows without a colour map: greyscale for most; block patterns
-/// and a few others have their own documented defaults.
+/// The colours a pattern shows without a colour map.
 fn default_map(kind: &PatternKind) -> BlendMap<Pigment> {
-    let solid = |r, g, b| Pigment::Solid(Colour::rgb(r, g, b));
-    let entries = match kind {
-        PatternKind::Checker => vec![(0.0, solid(0.0, 0.0, 1.0)), (1.0, solid(0.0, 1.0, 0.0))],
-        PatternKind::Brick { .. } => vec![(0.0, solid(1.0, 1.0, 1.0)), (1.0, solid(1.0, 0.0, 0.0))],
-        PatternKind::Hexagon => vec![
-            (0.0, solid(0.0, 0.0, 1.0)),
-            (1.0, solid(0.0, 1.0, 0.0)),
-            (2.0, solid(1.0, 0.0, 0.0)),
-        ],
-        PatternKind::Square => vec![
-            (0.0, solid(1.0, 0.0, 0.0)),
-            (1.0, solid(0.0, 0.0, 1.0)),
-            (2.0, solid(1.0, 1.0, 0.0)),
-            (3.0, solid(0.0, 1.0, 0.0)),
-        ],
-        PatternKind::Triangular => vec![
-            (0.0, solid(1.0, 0.0, 0.0)),
-            (1.0, solid(0.0, 1.0, 0.0)),
-            (2.0, solid(0.0, 0.0, 1.0)),
-            (3.0, solid(1.0, 1.0, 0.0)),
-            (4.0, solid(0.0, 1.0, 1.0)),
-            (5.0, solid(1.0, 0.0, 1.0)),
-        ],
-        _ => vec![(0.0, solid(0.0, 0.0, 0.0)), (1.0, solid(1.0, 1.0, 1.0))],
-    };
-    BlendMap { entries }
+    BlendMap {
+        entries: crate::pattern::default_colours(kind)
+            .into_iter()
+            .map(|(at, colour)| (at, Pigment::Solid(colour)))
+            .collect(),
+    }
 }
 
 /// Applies an object's transformation to a texture's patterns, recursively.

@@ -39,6 +39,10 @@ pub enum Warp {
         strength: f64,
         falloff: f64,
         inverse: bool,
+        /// `repeat`: a black hole in every block of this size (zero: just the one).
+        repeat: DVec3,
+        /// `turbulence`: how far each repeated centre strays, at random, in its block.
+        jitter: DVec3,
     },
     Cylindrical {
         orientation: DVec3,
@@ -89,6 +93,7 @@ pub enum PatternKind {
     Facets {
         coords: f64,
         size: f64,
+        metric: f64,
     },
     Function(Arc<Function>),
     Gradient(DVec3),
@@ -194,10 +199,12 @@ pub enum Pigment {
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum NormalKind {
-    /// A pattern used as a height field, scaled by `bump_size`.
+    /// A pattern used as a height field, scaled by `bump_size`; a `slope_map` reshapes
+    /// its values into heights and slopes.
     Pattern {
         pattern: Box<Pattern>,
         bump_size: f64,
+        slope_map: Option<BlendMap<(f64, f64)>>,
     },
     /// A `normal_map`.
     Map {

@@ -5,10 +5,20 @@
 //! then give a value that frequency, phase and the wave type shape into 0..1; block
 //! patterns (checker, hexagon, brick...) name a map entry directly.
 
+mod blocks;
+pub mod cells;
+mod fractal;
+pub mod inside;
+mod spiral;
+pub mod warp;
+pub mod waves;
+
 use crate::noise;
-use crate::scene::{Colour, Pattern, PatternKind, Pigment, Turbulence, Warp, WaveType};
+use crate::scene::{Colour, Pattern, PatternKind, Pigment, WaveType};
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
+
+pub use spiral::quilt_offset;
 
 /// What a pattern gives at a point.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -23,19 +33,10 @@ pub enum PatternValue {
 pub fn check(pattern: &Pattern) -> Result<(), String> {
     let unsupported = match &pattern.kind {
         PatternKind::Average => Some("the average pattern"),
-        PatternKind::Brick { .. } => Some("the brick pattern"),
-        PatternKind::Cells => Some("the cells pattern"),
-        PatternKind::Crackle { .. } => Some("the crackle pattern"),
-        PatternKind::Facets { .. } => Some("the facets pattern"),
-        PatternKind::Hexagon => Some("the hexagon pattern"),
-        PatternKind::Ripples => Some("the ripples pattern"),
-        PatternKind::Waves => Some("the waves pattern"),
-        PatternKind::Spiral1 { .. } | PatternKind::Spiral2 { .. } => Some("the spiral patterns"),
-        PatternKind::Object(_) => Some("the object pattern"),
-        PatternKind::Quilted { .. } => Some("the quilted pattern"),
-        PatternKind::Square => Some("the square pattern"),
-        PatternKind::Triangular => Some("the triangular pattern"),
-        PatternKind::Fractal(_) => Some("the fractal patterns (mandel, julia, magnet)"),
+        PatternKind::Object(object) => return inside::check(object),
+        PatternKind::Facets { .. } => {
+            return Err("the facets pattern can only be used in a normal".into());
+        }
         _ => None,
     };
     if let Some(what) = unsupported {
@@ -48,19 +49,6 @@ pub fn check(pattern: &Pattern) -> Result<(), String> {
             "not supported yet: {}",
             missing.trim_start_matches("not supported yet: ")
         ));
-    }
-    for warp in &pattern.warps {
-        match warp {
-            Warp::Turbulence(_) | Warp::Transform(_) | Warp::Repeat { .. } => {}
-            other => {
-                let name = format!("{other:?}");
-                let name = name.split([' ', '{', '(']).next().unwrap_or_default();
-                return Err(format!(
-                    "not supported yet: the {} warp",
-                    name.to_ascii_lowercase()
-                ));
-            }
-        }
     }
     Ok(())
 }
@@ -133,6 +121,84 @@ pub fn pigment_colour(pigment: &Pigment, world: DVec3) -> Colour {
     }
 }
 
+/// The colours a pattern shows without a colour map, as POV-Ray defines them: grey from
+/// black to white for most, and colours of their own for the block patterns and a few
+/// classics.
+pub fn default_colours(kind: &PatternKind) -> Vec<(f64, Colour)> {
+    let c = Colour::rgb;
+    match kind {
+        PatternKind::Checker | PatternKind::Object(_) => {
+            vec![(0.0, c(0.0, 0.0, 1.0)), (1.0, c(0.0, 1.0, 0.0))]
+        }
+        PatternKind::Brick { .. } => vec![(0.0, c(0.5, 0.5, 0.5)), (1.0, c(0.6, 0.15, 0.15))],
+        PatternKind::Hexagon => vec![
+            (0.0, c(0.0, 0.0, 1.0)),
+            (1.0, c(0.0, 1.0, 0.0)),
+            (2.0, c(1.0, 0.0, 0.0)),
+        ],
+        PatternKind::Square | PatternKind::Triangular => {
+            let n = if matches!(kind, PatternKind::Square) {
+                4
+            } else {
+                6
+            };
+            [
+                c(1.0, 0.0, 0.0),
+                c(0.0, 1.0, 0.0),
+                c(0.0, 0.0, 1.0),
+                c(1.0, 1.0, 0.0),
+                c(0.0, 1.0, 1.0),
+                c(1.0, 0.0, 1.0),
+            ]
+            .into_iter()
+            .take(n)
+            .enumerate()
+            .map(|(i, colour)| (i as f64, colour))
+            .collect()
+        }
+        PatternKind::Agate { .. } => vec![
+            (0.0, c(1.0, 1.0, 1.0)),
+            (0.5, c(0.95, 0.75, 0.5)),
+            (0.5, c(0.9, 0.7, 0.5)),
+            (0.6, c(0.9, 0.7, 0.4)),
+            (0.6, c(1.0, 0.7, 0.4)),
+            (1.0, c(0.6, 0.3, 0.0)),
+        ],
+        PatternKind::Bozo => vec![
+            (0.4, c(1.0, 1.0, 1.0)),
+            (0.4, c(0.0, 1.0, 0.0)),
+            (0.6, c(0.0, 1.0, 0.0)),
+            (0.6, c(0.0, 0.0, 1.0)),
+            (0.8, c(0.0, 0.0, 1.0)),
+            (0.8, c(1.0, 0.0, 0.0)),
+        ],
+        PatternKind::Marble => vec![
+            (0.0, c(0.9, 0.8, 0.8)),
+            (0.9, c(0.9, 0.08, 0.08)),
+            (0.9, c(0.0, 0.0, 0.0)),
+        ],
+        PatternKind::Radial => vec![
+            (0.0, c(0.0, 1.0, 1.0)),
+            (0.333, c(1.0, 1.0, 0.0)),
+            (0.666, c(1.0, 0.0, 1.0)),
+            (1.0, c(0.0, 1.0, 1.0)),
+        ],
+        PatternKind::Wood => vec![(0.6, c(0.666, 0.312, 0.2)), (0.6, c(0.4, 0.1333, 0.066))],
+        PatternKind::Fractal(f)
+            if f.kind == crate::scene::FractalKind::Mandel && f.exponent == 2 =>
+        {
+            vec![
+                (0.001, c(0.0, 0.0, 0.0)),
+                (0.001, c(0.0, 1.0, 1.0)),
+                (0.012, c(1.0, 1.0, 0.0)),
+                (0.015, c(1.0, 0.0, 1.0)),
+                (0.1, c(0.0, 1.0, 1.0)),
+            ]
+        }
+        _ => vec![(0.0, c(0.0, 0.0, 0.0)), (1.0, c(1.0, 1.0, 1.0))],
+    }
+}
+
 /// The pattern's value at a world point.
 pub fn evaluate(pattern: &Pattern, world: DVec3) -> PatternValue {
     evaluate_local(pattern, pattern.transform.inverse.transform_point3(world))
@@ -140,14 +206,29 @@ pub fn evaluate(pattern: &Pattern, world: DVec3) -> PatternValue {
 
 /// The pattern's value at a point already in pattern space (before warps).
 pub fn evaluate_local(pattern: &Pattern, local: DVec3) -> PatternValue {
-    let mut p = local;
-    for warp in pattern.warps.iter().rev() {
-        p = apply_warp(warp, p);
-    }
+    evaluate_warped(pattern, warped(pattern, local))
+}
+
+/// A point of pattern space carried through the pattern's warps, the last written first.
+pub fn warped(pattern: &Pattern, local: DVec3) -> DVec3 {
+    pattern
+        .warps
+        .iter()
+        .rev()
+        .fold(local, |p, warp| warp::apply(warp, p))
+}
+
+/// The pattern's value at a point that has been through its warps already.
+pub fn evaluate_warped(pattern: &Pattern, p: DVec3) -> PatternValue {
     let classic = pattern.turbulence.as_ref();
     let turbulent = |p: DVec3| match classic {
-        Some(t) => p + displacement(t, p),
+        Some(t) => p + warp::displacement(t, p),
         None => p,
+    };
+    // The scalar turbulence marble and the spirals add to their value.
+    let scalar_turbulence = |p: DVec3| match classic {
+        Some(t) => noise::scalar_turbulence(p, t.octaves, t.omega, t.lambda) * t.amount.x,
+        None => 0.0,
     };
     let raw = match &pattern.kind {
         PatternKind::Checker => {
@@ -155,13 +236,20 @@ pub fn evaluate_local(pattern: &Pattern, local: DVec3) -> PatternValue {
             let sum = q.x.floor() + q.y.floor() + q.z.floor();
             return PatternValue::Block((sum.rem_euclid(2.0)) as usize);
         }
-        PatternKind::Marble => {
-            let mut v = p.x;
-            if let Some(t) = classic {
-                v += noise::scalar_turbulence(p, t.octaves, t.omega, t.lambda) * t.amount.x;
-            }
-            v
+        PatternKind::Brick { size, mortar } => {
+            return PatternValue::Block(blocks::brick(turbulent(p), *size, *mortar));
         }
+        PatternKind::Hexagon => return PatternValue::Block(blocks::hexagon(turbulent(p))),
+        PatternKind::Square => return PatternValue::Block(blocks::square(turbulent(p))),
+        PatternKind::Triangular => {
+            return PatternValue::Block(blocks::triangular(turbulent(p)));
+        }
+        PatternKind::Object(object) => {
+            return PatternValue::Block(usize::from(inside::inside(object, turbulent(p))));
+        }
+        PatternKind::Marble => p.x + scalar_turbulence(p),
+        PatternKind::Spiral1 { arms } => spiral::spiral1(p, *arms, scalar_turbulence(p)),
+        PatternKind::Spiral2 { arms } => spiral::spiral2(p, *arms, scalar_turbulence(p)),
         PatternKind::Wood => {
             let q = match classic {
                 Some(t) => p + noise::turbulence(p, t.octaves, t.omega, t.lambda) * t.amount * 0.5,
@@ -174,6 +262,8 @@ pub fn evaluate_local(pattern: &Pattern, local: DVec3) -> PatternValue {
             let v = 0.5 + 0.5 * (TAU * (p.z + t)).sin();
             v.max(0.0).powf(0.77)
         }
+        PatternKind::Ripples => waves::ripples(turbulent(p), pattern.frequency, pattern.phase),
+        PatternKind::Waves => waves::waves(turbulent(p), pattern.frequency, pattern.phase),
         kind => blend_value(kind, turbulent(p)),
     };
     PatternValue::Blend(shape(pattern, raw))
@@ -220,51 +310,17 @@ fn blend_value(kind: &PatternKind, p: DVec3) -> f64 {
             }
             sum * 0.5
         }
+        PatternKind::Cells => cells::cells(p),
+        PatternKind::Crackle {
+            form,
+            metric,
+            offset,
+            solid,
+        } => cells::crackle(p, *form, *metric, *offset, *solid),
+        PatternKind::Quilted { control0, control1 } => spiral::quilted(p, *control0, *control1),
+        PatternKind::Fractal(f) => fractal::value(f, p),
         PatternKind::Function(f) => f.eval(&[p.x, p.y, p.z]),
         _ => 0.0,
-    }
-}
-
-/// The classic turbulence displacement of a point.
-fn displacement(t: &Turbulence, p: DVec3) -> DVec3 {
-    noise::turbulence(p, t.octaves, t.omega, t.lambda) * t.amount
-}
-
-fn apply_warp(warp: &Warp, p: DVec3) -> DVec3 {
-    match warp {
-        Warp::Turbulence(t) => p + displacement(t, p),
-        Warp::Transform(t) => t.inverse.transform_point3(p),
-        Warp::Repeat {
-            direction,
-            offset,
-            flip,
-        } => {
-            let axis = direction.abs().max_element();
-            let i = if direction.x != 0.0 {
-                0
-            } else if direction.y != 0.0 {
-                1
-            } else {
-                2
-            };
-            if axis == 0.0 {
-                return p;
-            }
-            let width = direction[i].abs();
-            let cell = (p[i] / width).floor();
-            let mut q = p;
-            q[i] -= cell * width;
-            q += *offset * cell;
-            if cell.rem_euclid(2.0) != 0.0 {
-                for k in 0..3 {
-                    if flip[k] != 0.0 {
-                        q[k] = if k == i { width - q[k] } else { -q[k] };
-                    }
-                }
-            }
-            q
-        }
-        _ => p,
     }
 }
 
