@@ -52,7 +52,9 @@ fn delimited(p: &mut Parser<'_>, close: SyntaxKind, body: impl FnOnce(&mut Parse
     let open = p.pos();
     let open_kind = p.current();
     let (end, closed) = match p.mark(open) {
-        Mark::Open { end, closed } => (Some(end as usize), closed),
+        // A closer past the current limit (a macro header cut short by `#end`) cannot
+        // be reached from here: the bracket is unclosed as far as this rule can see.
+        Mark::Open { end, closed } => (Some(end as usize), closed && p.within_limit(end as usize)),
         // Not seen by the pre-pass, which sees everything parsed structurally; kept
         // for robustness.
         _ => (None, false),

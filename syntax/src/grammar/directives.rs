@@ -151,6 +151,9 @@ fn macro_body(p: &mut Parser<'_>) {
     m.complete(p, MACRO_BODY);
 }
 
+// test_err macro_header_cut_by_end
+// #macro M(a #end )
+// #declare After = 1;
 // test macro_fragments
 // #macro Open() union { #end
 // #macro Close() } #end

@@ -247,6 +247,11 @@ impl<'t> Parser<'t> {
         m.complete(self, ERROR_NODE);
     }
 
+    /// Whether token `at` lies before the current limit, inside the region being parsed.
+    pub(crate) fn within_limit(&self, at: usize) -> bool {
+        at < self.limit
+    }
+
     /// Runs `f` with the input ending at `end` (never later than the current limit).
     pub(crate) fn with_limit<R>(&mut self, end: usize, f: impl FnOnce(&mut Self) -> R) -> R {
         let outer = self.limit;

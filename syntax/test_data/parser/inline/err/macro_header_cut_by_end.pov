@@ -1,0 +1,2 @@
+#macro M(a #end )
+#declare After = 1;
