@@ -35,6 +35,12 @@ pub struct BuildSettings {
 }
 
 pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, BuildError> {
+    if let Some(photons) = &scene.settings.photons {
+        return Err(BuildError {
+            message: "not supported yet: photons".into(),
+            origin: photons.origin.clone(),
+        });
+    }
     let mut builder = Builder {
         materials: HashMap::new(),
         default_material: None,

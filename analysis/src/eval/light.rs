@@ -133,7 +133,7 @@ impl Evaluator<'_> {
                 LOOKS_LIKE_KW | PROJECTED_THROUGH_KW => {
                     return Err(self.unsupported(&token, self.text(&token)));
                 }
-                PHOTONS_KW => self.light_photons(&mut light)?,
+                PHOTONS_KW => self.light_photons(&mut light.photons)?,
                 kind if Self::starts_transform(kind) => {
                     let t = self.transformation(&token)?;
                     transform_light(&mut light, &t);
@@ -143,30 +143,6 @@ impl Evaluator<'_> {
                         &token,
                         format!(
                             "expected a light_source item or '}}', found {}",
-                            self.describe(&token)
-                        ),
-                    ));
-                }
-            }
-        }
-    }
-
-    fn light_photons(&mut self, light: &mut Light) -> Result<()> {
-        self.expect(L_BRACE, "'{'")?;
-        loop {
-            let token = self.next()?;
-            match token.kind {
-                R_BRACE => return Ok(()),
-                REFRACTION_KW => light.photons_refraction = self.optional_bool()?,
-                REFLECTION_KW => light.photons_reflection = self.optional_bool()?,
-                AREA_LIGHT_KW => {
-                    self.optional_bool()?;
-                }
-                _ => {
-                    return Err(self.error_at(
-                        &token,
-                        format!(
-                            "expected refraction, reflection or '}}' in photons, found {}",
                             self.describe(&token)
                         ),
                     ));

@@ -19,6 +19,7 @@ mod math_shapes;
 mod normal_map;
 mod object;
 mod pattern_head;
+mod photons;
 mod rng;
 mod scene_items;
 mod spline;

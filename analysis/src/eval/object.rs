@@ -343,13 +343,13 @@ impl Evaluator<'_> {
                         object.bounded_by = list;
                     }
                 }
-                PHOTONS_KW => self.skip_braced_block(&token)?,
-                RADIOSITY_KW => self.skip_braced_block(&token)?,
-                SPLIT_UNION_KW | CUTAWAY_TEXTURES_KW | UV_MAPPING_KW => {
-                    if token.kind == SPLIT_UNION_KW {
-                        self.optional_bool()?;
-                    }
+                PHOTONS_KW => {
+                    self.object_photons(&mut object.photons)?;
+                    super::photons::spread_to_parts(object);
                 }
+                RADIOSITY_KW => self.skip_braced_block(&token)?,
+                SPLIT_UNION_KW => object.photons.split_union = self.optional_bool()?,
+                CUTAWAY_TEXTURES_KW | UV_MAPPING_KW => {}
                 _ => {
                     self.unget(token);
                     return Ok(());

@@ -103,9 +103,7 @@ impl Evaluator<'_> {
                 MM_PER_UNIT_KW => {
                     self.float()?;
                 }
-                PHOTONS_KW => {
-                    return Err(self.unsupported(&token, "photons"));
-                }
+                PHOTONS_KW => self.settings.photons = Some(self.global_photons(&token)?),
                 RADIOSITY_KW => {
                     return Err(self.unsupported(&token, "radiosity"));
                 }

@@ -1,4 +1,4 @@
-use super::{Colour, Object, Origin};
+use super::{Colour, LightPhotons, Object, Origin};
 use glam::DVec3;
 
 #[derive(Debug, Clone, PartialEq)]
@@ -47,8 +47,7 @@ pub struct Light {
     pub media_attenuation: bool,
     pub looks_like: Option<Box<Object>>,
     pub projected_through: Option<Box<Object>>,
-    pub photons_refraction: bool,
-    pub photons_reflection: bool,
+    pub photons: LightPhotons,
     pub origin: Origin,
 }
 
@@ -66,8 +65,7 @@ impl Light {
             media_attenuation: false,
             looks_like: None,
             projected_through: None,
-            photons_refraction: false,
-            photons_reflection: false,
+            photons: LightPhotons::default(),
             origin: None,
         }
     }

@@ -8,6 +8,7 @@ mod colour;
 mod light;
 pub mod math_shapes;
 mod object;
+mod photons;
 mod settings;
 mod texture;
 mod transform;
@@ -16,7 +17,8 @@ pub use camera::{Camera, CameraKind, FocalBlur};
 pub use colour::Colour;
 pub use light::{AreaLight, Light, LightKind};
 pub use object::{CsgOp, Interior, Object, ObjectFlags, Shape};
-pub use settings::{Fog, GlobalSettings, GroundFog, Photons, Radiosity, SkySphere};
+pub use photons::{LightPhotons, ObjectPhotons, PhotonDensity, Photons};
+pub use settings::{Fog, GlobalSettings, GroundFog, Radiosity, SkySphere};
 pub use texture::{
     BlendMap, Finish, Fractal, FractalKind, Normal, NormalKind, Pattern, PatternKind, Pigment,
     Reflection, Texture, Turbulence, Warp, WaveType,

@@ -2,7 +2,7 @@ use super::math_shapes::{
     Blob, HeightField, Isosurface, JuliaFractal, Lathe, Lemon, Parametric, Polynomial, Prism, Sor,
     SphereSweep, Text,
 };
-use super::{Colour, Light, Origin, Texture, Transform};
+use super::{Colour, Light, ObjectPhotons, Origin, Texture, Transform};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -155,6 +155,7 @@ pub struct Object {
     pub interior_texture: Option<Arc<Texture>>,
     pub interior: Option<Arc<Interior>>,
     pub flags: ObjectFlags,
+    pub photons: ObjectPhotons,
     pub clipped_by: Vec<Object>,
     pub bounded_by: Vec<Object>,
     pub origin: Origin,
@@ -169,6 +170,7 @@ impl Object {
             interior_texture: None,
             interior: None,
             flags: ObjectFlags::default(),
+            photons: ObjectPhotons::default(),
             clipped_by: Vec::new(),
             bounded_by: Vec::new(),
             origin,

@@ -1,4 +1,4 @@
-use super::{Colour, Pigment, Transform};
+use super::{Colour, Photons, Pigment, Transform};
 use glam::DVec3;
 
 /// `global_settings { }`, with POV-Ray's defaults. `None` means the scene did not set it.
@@ -29,21 +29,6 @@ impl Default for GlobalSettings {
             radiosity: None,
         }
     }
-}
-
-/// `photons { }` in global_settings.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Photons {
-    pub spacing: Option<f64>,
-    pub count: Option<u32>,
-    pub gather_min: u32,
-    pub gather_max: u32,
-    pub max_trace_level: Option<u32>,
-    pub adc_bailout: Option<f64>,
-    pub jitter: f64,
-    pub autostop: f64,
-    pub radius: Option<f64>,
-    pub media: Option<(u32, f64)>,
 }
 
 /// `radiosity { }` in global_settings, with 3.7's defaults.
