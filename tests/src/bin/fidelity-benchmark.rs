@@ -1,11 +1,14 @@
 //! Times our render of every fidelity scene (evaluation plus tracing, without PNG encoding;
 //! the best of three runs) on one thread and on all threads, beside POV-Ray's own parse plus trace time at
-//! `+WT1` from `tests/reference/povray-times.txt`, and prints the table. Single-thread
-//! figures are CPU time of the process (Linux's per-thread scheduler statistics), as
-//! POV-Ray's are CPU seconds: the machine is shared, and wall time would measure the
-//! neighbours. All-thread figures are wall time.
+//! `+WT1`, and prints the table. Single-thread figures are CPU time of the process (Linux's
+//! per-thread scheduler statistics), as POV-Ray's are CPU seconds: the machine is shared,
+//! and wall time would measure the neighbours. All-thread figures are wall time.
 //!
-//!   cargo run --release -p tests --bin fidelity-benchmark [SCENE...]
+//!   cargo run --release -p tests --bin fidelity-benchmark [--live-povray] [SCENE...]
+//!
+//! POV-Ray's times come from `tests/reference/povray-times.txt` (recorded by render.sh),
+//! or with `--live-povray` from running `povray +WT1` on each scene in the same run, the
+//! best of three, so that both renderers are timed under the same load.
 
 use std::time::{Duration, Instant};
 use tests::fidelity::{manifest, reference_dir};
@@ -39,11 +42,53 @@ fn best_of_three(scene: &tests::fidelity::FidelityScene, source: &str, cpu_time:
         .expect("three runs")
 }
 
+/// POV-Ray's own CPU seconds for every phase it reports (parse, photons, radiosity
+/// pretrace, trace), the best of three runs of `povray +WT1` on `scene`.
+fn live_povray_seconds(scene: &tests::fidelity::FidelityScene) -> Option<f64> {
+    let path = tests::workspace_root().join(&scene.scene);
+    let out = std::env::temp_dir().join(format!("fidelity-benchmark-{}.png", scene.name));
+    (0..3)
+        .map(|_| {
+            let run = std::process::Command::new("povray")
+                .arg(format!("+I{}", path.display()))
+                .arg(format!("+O{}", out.display()))
+                .args(["+FN", "-D", "-V", "+WT1"])
+                .args(&scene.options)
+                .arg(format!("+L{}", path.parent()?.display()))
+                .output()
+                .ok()?;
+            let log = String::from_utf8_lossy(&run.stderr);
+            run.status.success().then(|| povray_cpu_seconds(&log))
+        })
+        .collect::<Option<Vec<f64>>>()?
+        .into_iter()
+        .reduce(f64::min)
+}
+
+/// The sum of the "N CPU-seconds total" figures that follow each of POV-Ray's "... Time:"
+/// statistics lines.
+fn povray_cpu_seconds(log: &str) -> f64 {
+    let mut lines = log.lines();
+    let mut total = 0.0;
+    while let Some(line) = lines.next() {
+        if line.trim_start().ends_with("seconds)") && line.contains(" Time:") {
+            let cpu = lines.next().and_then(|next| {
+                let before = next.split(" CPU-seconds").next()?;
+                before.split_whitespace().last()?.parse::<f64>().ok()
+            });
+            total += cpu.unwrap_or(0.0);
+        }
+    }
+    total
+}
+
 fn main() {
-    let only: Vec<String> = std::env::args().skip(1).collect();
+    let mut only: Vec<String> = std::env::args().skip(1).collect();
+    let live = only.iter().any(|a| a == "--live-povray");
+    only.retain(|a| a != "--live-povray");
     let times = std::fs::read_to_string(reference_dir().join("povray-times.txt"))
         .expect("tests/reference/povray-times.txt");
-    let povray = |name: &str| -> Option<f64> {
+    let recorded = |name: &str| -> Option<f64> {
         times.lines().find_map(|l| {
             let mut w = l.split_whitespace();
             (w.next() == Some(name)).then(|| {
@@ -58,7 +103,8 @@ fn main() {
         .build()
         .expect("a one-thread pool");
     println!(
-        "| scene | ours, 1 thread (CPU ms) | POV-Ray +WT1 parse+trace (CPU ms) | ratio | ours, {} threads (wall ms) |",
+        "| scene | ours, 1 thread (CPU ms) | POV-Ray +WT1 parse+trace (CPU ms, {}) | ratio | ours, {} threads (wall ms) |",
+        if live { "this run" } else { "recorded" },
         rayon::current_num_threads()
     );
     println!("|---|---:|---:|---:|---:|");
@@ -70,7 +116,12 @@ fn main() {
         let one = single.install(|| best_of_three(&scene, &source, true));
         let all = best_of_three(&scene, &source, false);
         let ms = |d: Duration| d.as_secs_f64() * 1000.0;
-        let (pov, ratio) = match povray(&scene.name) {
+        let povray = if live {
+            live_povray_seconds(&scene)
+        } else {
+            recorded(&scene.name)
+        };
+        let (pov, ratio) = match povray {
             Some(p) => (
                 format!("{:.0}", p * 1000.0),
                 format!("{:.2}", ms(one) / (p * 1000.0)),
@@ -85,5 +136,16 @@ fn main() {
             ratio,
             ms(all)
         );
+    }
+}
+
+#[cfg(test)]
+mod povray_log {
+    use super::povray_cpu_seconds;
+
+    #[test]
+    fn sums_the_cpu_seconds_of_every_phase() {
+        let log = "Parse Time:    0 hours  0 minutes  0 seconds (0.012 seconds)\n              using 1 thread(s) with 0.011 CPU-seconds total\nPhoton Time:   0 hours  0 minutes  1 seconds (0.500 seconds)\n              using 1 thread(s) with 0.490 CPU-seconds total\nTrace Time:    0 hours  0 minutes  1 seconds (1.250 seconds)\n              using 1 thread(s) with 1.240 CPU-seconds total\n";
+        assert!((povray_cpu_seconds(log) - 1.741).abs() < 1e-9);
     }
 }
