@@ -300,11 +300,22 @@ impl<'t> TreeBuilder<'t> {
     }
 
     fn token(&mut self, kind: SyntaxKind, text: &'t str) {
-        let token = self
-            .tokens
-            .entry((kind, text))
-            .or_insert_with(|| GreenToken::new(kind.into(), text))
-            .clone();
+        // Numbers, strings and comments seldom repeat: sharing them would only fill the
+        // table (mesh data files hold hundreds of thousands of distinct numbers).
+        let token = if matches!(
+            kind,
+            SyntaxKind::NUMBER
+                | SyntaxKind::STRING
+                | SyntaxKind::LINE_COMMENT
+                | SyntaxKind::BLOCK_COMMENT
+        ) {
+            GreenToken::new(kind.into(), text)
+        } else {
+            self.tokens
+                .entry((kind, text))
+                .or_insert_with(|| GreenToken::new(kind.into(), text))
+                .clone()
+        };
         self.children.push(NodeOrToken::Token(token));
     }
 
