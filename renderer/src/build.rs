@@ -2,8 +2,10 @@
 //! the object's transform folded in, materials shared between objects that share a texture,
 //! CSG trees with their bounds, lights, and the bounding volume hierarchy.
 
+use crate::atmosphere::{Atmosphere, Sky};
 use crate::bvh::Bvh;
 use crate::colour::Sample;
+use crate::interior::Interior;
 use crate::light::Light;
 use crate::material::Material;
 use crate::object::{Csg, CsgKind, Leaf, Object, Visibility};
@@ -12,7 +14,7 @@ use crate::shapes::{
     build_math_shape,
 };
 use crate::tracer::{Quality, World};
-use analysis::scene::{self, CsgOp, Interior, Origin, Scene};
+use analysis::scene::{self, CsgOp, Origin, Scene};
 use glam::{DAffine3, DMat3, DVec3};
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -46,6 +48,9 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
         default_material: None,
         lights: Vec::new(),
         reports: Vec::new(),
+        has_media: false,
+        // POV-Ray computes media from quality 9 on.
+        with_media: settings.quality >= 9,
     };
     for light in &scene.lights {
         builder.add_light(light)?;
@@ -59,6 +64,16 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
             objects.push(built);
         }
     }
+    let atmosphere =
+        Atmosphere::from_scene(scene, builder.with_media).map_err(|message| BuildError {
+            message,
+            origin: None,
+        })?;
+    let camera_interiors = if builder.has_media || atmosphere.is_some() {
+        camera_interiors(&objects, scene.camera.location)
+    } else {
+        Vec::new()
+    };
     let bvh = Bvh::build(objects);
     // Scenes without `#version 3.7` keep POV-Ray 3.6's rules: with alpha output the
     // background is fully transparent black whatever its colour.
@@ -76,6 +91,17 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
         }
     };
     let scale = scene_scale(scene, &bvh);
+    let sky = match &scene.sky_sphere {
+        Some(s) => {
+            let mut sky = Sky::from_scene(s).map_err(|message| BuildError {
+                message,
+                origin: None,
+            })?;
+            sky.reflections_only = settings.output_alpha && legacy;
+            Some(sky)
+        }
+        None => None,
+    };
     Ok(World {
         bvh,
         lights: builder.lights,
@@ -93,7 +119,31 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
         legacy_opacity: legacy,
         scale,
         shape_reports: builder.reports,
+        participating: builder.has_media || atmosphere.is_some(),
+        sky,
+        atmosphere,
+        camera_interiors,
     })
+}
+
+/// The interiors of the objects around the camera that media rays must start in: those
+/// holding media and the solid ones, which keep all media and fog out.
+fn camera_interiors(objects: &[Object], camera: DVec3) -> Vec<Arc<Interior>> {
+    objects
+        .iter()
+        .filter(|o| o.inside(camera))
+        .filter_map(|o| first_interior(o))
+        .filter(|i| !i.media.is_empty() || !i.hollow)
+        .cloned()
+        .collect()
+}
+
+/// The interior an object's leaves share.
+fn first_interior(object: &Object) -> Option<&Arc<Interior>> {
+    match object {
+        Object::Leaf(leaf) => Some(&leaf.interior),
+        Object::Csg(csg) => csg.children.first().and_then(first_interior),
+    }
 }
 
 /// A length typical of the scene: the camera's distance from the origin or the extent of
@@ -115,6 +165,9 @@ struct Builder {
     default_material: Option<Arc<Material>>,
     lights: Vec<Light>,
     reports: Vec<ShapeReport>,
+    /// Whether some interior has media, so that rays must look for them.
+    has_media: bool,
+    with_media: bool,
 }
 
 impl Builder {
@@ -210,11 +263,20 @@ impl Builder {
         let texture = object.texture.as_ref().or(inherited);
         // Every object has an interior, its own or its CSG's; the leaves of one object
         // share it, so that a ray knows when it leaves what it entered.
-        let interior = object
-            .interior
-            .clone()
-            .or_else(|| inherited_interior.cloned())
-            .unwrap_or_default();
+        let hollow = flags
+            .hollow
+            .unwrap_or_else(|| inherited_interior.is_some_and(|i| i.hollow));
+        let interior = match (&object.interior, inherited_interior) {
+            (Some(own), _) => {
+                let built = Interior::from_scene(own, hollow, self.with_media).map_err(fail)?;
+                self.has_media |= !built.media.is_empty();
+                Arc::new(built)
+            }
+            (None, Some(inherited)) => inherited.clone(),
+            (None, None) => Arc::new(
+                Interior::from_scene(&scene::Interior::default(), hollow, false).map_err(fail)?,
+            ),
+        };
         let (shape, frame) = match &object.shape {
             scene::Shape::Quadric { .. } => {
                 return Err(BuildError {

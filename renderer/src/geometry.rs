@@ -24,7 +24,9 @@ fn world_of(object: &Object) -> Result<World, String> {
         objects: vec![object.clone()],
         background: None,
         fogs: Vec::new(),
-        sky_spheres: Vec::new(),
+        rainbows: Vec::new(),
+        sky_sphere: None,
+        media: Vec::new(),
         settings: Default::default(),
         version: None,
     };

@@ -1,6 +1,7 @@
 //! The Povrayst ray tracer: builds runtime shapes, materials, lights and acceleration
 //! structures from an [`analysis::scene::Scene`] and traces them into an image.
 
+mod atmosphere;
 mod bounds;
 mod build;
 mod bvh;
@@ -10,8 +11,10 @@ mod fast_math;
 mod function_program;
 mod geometry;
 mod image;
+mod interior;
 mod light;
 mod material;
+mod media;
 mod normal;
 mod object;
 mod options;

@@ -13,6 +13,10 @@ pub struct Light {
     pub colour: DVec3,
     /// Fill lights: no shadows, no highlights.
     pub shadowless: bool,
+    /// Whether media scatter this light.
+    pub media_interaction: bool,
+    /// Whether fog and atmospheric media dim this light on its way.
+    pub media_attenuation: bool,
     kind: Kind,
     /// `(fade_distance, fade_power)` when fading is on.
     fade: Option<(f64, f64)>,
@@ -133,6 +137,8 @@ impl Light {
             position: light.position,
             colour: light.colour.rgb,
             shadowless: light.shadowless,
+            media_interaction: light.media_interaction,
+            media_attenuation: light.media_attenuation,
             kind,
             fade: (light.fade_power > 0.0)
                 .then(|| (light.fade_distance.unwrap_or(0.0), light.fade_power)),
@@ -181,6 +187,51 @@ impl Light {
             distance,
             colour: self.colour * attenuation,
         })
+    }
+
+    /// Where `ray` (of unit direction) crosses the edge of this light's beam between `t0`
+    /// and `t1`: a spotlight's cone at its falloff angle or a cylinder light's tube at its
+    /// falloff radius. Media sampling splits the ray there so that no beam falls between
+    /// two samples.
+    pub fn beam_crossings(&self, ray: &crate::ray::Ray, (t0, t1): (f64, f64), out: &mut Vec<f64>) {
+        let w = ray.origin - self.position;
+        let d = ray.direction;
+        let (a, b, c) = match self.kind {
+            Kind::Spot {
+                direction: axis,
+                cos_falloff,
+                ..
+            } => {
+                let c2 = cos_falloff * cos_falloff;
+                let (da, wa) = (d.dot(axis), w.dot(axis));
+                (
+                    da * da - c2 * d.dot(d),
+                    2.0 * (da * wa - c2 * d.dot(w)),
+                    wa * wa - c2 * w.dot(w),
+                )
+            }
+            Kind::Cylinder {
+                direction: axis,
+                falloff,
+                ..
+            } => {
+                let dp = d - axis * d.dot(axis);
+                let wp = w - axis * w.dot(axis);
+                (dp.dot(dp), 2.0 * dp.dot(wp), wp.dot(wp) - falloff * falloff)
+            }
+            Kind::Point | Kind::Parallel { .. } => return,
+        };
+        let roots = if a.abs() < 1e-12 {
+            [(b.abs() > 1e-12).then(|| -c / b), None]
+        } else {
+            let disc = b * b - 4.0 * a * c;
+            if disc < 0.0 {
+                return;
+            }
+            let s = disc.sqrt();
+            [Some((-b - s) / (2.0 * a)), Some((-b + s) / (2.0 * a))]
+        };
+        out.extend(roots.into_iter().flatten().filter(|t| *t > t0 && *t < t1));
     }
 
     /// Cone, tube and distance attenuation for light reaching `point` along `-direction`

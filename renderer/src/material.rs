@@ -200,7 +200,7 @@ fn layer_from_scene(texture: &scene::Texture) -> Result<Layer, String> {
     })
 }
 
-fn pigment_from_scene(pigment: &scene::Pigment) -> Result<Pigment, String> {
+pub(crate) fn pigment_from_scene(pigment: &scene::Pigment) -> Result<Pigment, String> {
     match pigment {
         scene::Pigment::Solid(c) => Ok(Pigment::Solid(*c)),
         scene::Pigment::Pattern { pattern, map } => {

@@ -6,10 +6,10 @@
 //! inverted children, so subtracting a union removes no surface the union hides.
 
 use crate::bounds::Aabb;
+use crate::interior::Interior;
 use crate::material::Material;
 use crate::ray::{Ray, RayKind};
 use crate::shapes::{Roots, Shape};
-use analysis::scene::Interior;
 use glam::{DAffine3, DMat3, DVec3};
 use std::sync::Arc;
 

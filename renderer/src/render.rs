@@ -326,7 +326,9 @@ mod tests {
             objects,
             background: Some(Colour::rgb(0.0, 0.0, 1.0)),
             fogs: Vec::new(),
-            sky_spheres: Vec::new(),
+            rainbows: Vec::new(),
+            sky_sphere: None,
+            media: Vec::new(),
             settings: Default::default(),
             version: Some(3.7),
         }

@@ -4,14 +4,19 @@
 //! reflection with its variable and Fresnel forms, and filtered or transmitted light going
 //! on through the surface, refracted by the interiors the ray enters and leaves.
 
+mod participating;
+
+use crate::atmosphere::{Atmosphere, Sky};
 use crate::bvh::Bvh;
 use crate::colour::Sample;
+use crate::interior::Interior;
 use crate::light::{Incoming, Light};
 use crate::material::Layer;
 use crate::object::{Hit, Leaf, Query};
 use crate::ray::{Ray, RayKind};
-use analysis::scene::{Finish, Interior};
+use analysis::scene::Finish;
 use glam::DVec3;
+use std::sync::Arc;
 
 /// Which computations the `Quality` setting allows (POV-Ray's levels 0 to 11).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -60,6 +65,14 @@ pub struct World {
     pub scale: f64,
     /// Shapes with something to report after the render (an isosurface's max_gradient).
     pub shape_reports: Vec<crate::shapes::ShapeReport>,
+    pub sky: Option<Sky>,
+    pub atmosphere: Option<Arc<Atmosphere>>,
+    /// Whether any ray may pass through fog, a rainbow or media; when not, rays skip the
+    /// check altogether.
+    pub participating: bool,
+    /// The interiors the camera is in that matter to media: containers of media and, in
+    /// scenes with an atmosphere, solid objects, which keep it out.
+    pub camera_interiors: Vec<Arc<Interior>>,
 }
 
 /// POV-Ray's greyscale weights.
@@ -79,6 +92,8 @@ pub struct Tracer<'w> {
     /// The shadow samples of an area light's grid for the current point, kept between
     /// points to spare an allocation each time.
     area_samples: Vec<Option<DVec3>>,
+    /// The interiors shadow rays start in: those of a media sample's containers.
+    shadow_start: Vec<&'w Interior>,
 }
 
 impl<'w> Tracer<'w> {
@@ -89,6 +104,7 @@ impl<'w> Tracer<'w> {
             interiors: Vec::new(),
             last_blocker: None,
             area_samples: Vec::new(),
+            shadow_start: Vec::new(),
         }
     }
 
@@ -100,6 +116,9 @@ impl<'w> Tracer<'w> {
     /// The sample a camera ray brings back.
     pub fn trace_primary(&mut self, ray: &Ray) -> Sample {
         self.interiors.clear();
+        let world = self.world;
+        self.interiors
+            .extend(world.camera_interiors.iter().map(|i| &**i));
         self.trace(ray, RayKind::Primary, 1, 1.0)
     }
 
@@ -108,11 +127,14 @@ impl<'w> Tracer<'w> {
             return Sample::default();
         }
         let q = Query::new(*ray, kind, self.tolerance(ray.origin), f64::INFINITY);
-        match self.world.bvh.nearest(&q, &mut self.scratch) {
-            None if kind == RayKind::Reflected => Sample::new(self.world.reflected_background, 0.0),
-            None => self.world.background,
-            Some(hit) => self.shade(ray, &hit, level, weight),
+        let (sample, depth) = match self.world.bvh.nearest(&q, &mut self.scratch) {
+            None => (self.missed(ray, kind), f64::INFINITY),
+            Some(hit) => (self.shade(ray, &hit, level, weight), hit.t),
+        };
+        if self.world.participating {
+            return self.participate(ray, depth, sample);
         }
+        sample
     }
 
     fn shade(&mut self, ray: &Ray, hit: &Hit<'w>, level: u32, weight: f64) -> Sample {
@@ -279,11 +301,14 @@ impl<'w> Tracer<'w> {
         }
         let cos_in = cos_signed.abs();
         let world = self.world;
-        let light_colour = if !light.shadowless && world.quality.shadows {
+        let mut light_colour = if !light.shadowless && world.quality.shadows {
             self.unshadowed(light, p, &incoming)
         } else {
             incoming.colour
         };
+        if light.media_attenuation && world.atmosphere.is_some() {
+            light_colour *= self.atmospheric_attenuation(p, &incoming);
+        }
         if light_colour.max_element() < 1e-10 {
             return DVec3::ZERO;
         }
@@ -412,9 +437,9 @@ impl<'w> Tracer<'w> {
         let mut colour = colour;
         let mut origin = p;
         let mut remaining = distance;
-        // The interiors the shadow ray is inside, for distance fading; it starts outside
-        // everything, as POV-Ray's shadow rays do.
-        let mut inside: Vec<&'w Interior> = Vec::new();
+        // The interiors the shadow ray is inside, for distance fading and media; it starts
+        // outside everything, as POV-Ray's shadow rays do, unless it leaves a media sample.
+        let mut inside: Vec<&'w Interior> = self.shadow_start.clone();
         if let Some(blocker) = self.last_blocker {
             let eps = self.tolerance(p);
             let q = Query::new(Ray::new(p, direction), RayKind::Shadow, eps, distance - eps);
@@ -433,6 +458,10 @@ impl<'w> Tracer<'w> {
                 remaining - eps,
             );
             let Some(hit) = self.world.bvh.nearest(&q, &mut self.scratch) else {
+                let end = origin + direction * remaining;
+                for interior in &inside {
+                    colour *= participating::media_transmittance(interior, origin, end);
+                }
                 return colour;
             };
             let leaf: &'w Leaf = hit.leaf;
@@ -448,6 +477,7 @@ impl<'w> Tracer<'w> {
             match inside.iter().position(|i| std::ptr::eq(*i, interior)) {
                 Some(at) => {
                     colour *= fade(interior, hit.t);
+                    colour *= participating::media_transmittance(interior, origin, point);
                     inside.remove(at);
                 }
                 None => inside.push(interior),

@@ -374,8 +374,31 @@ impl Evaluator<'_> {
                 self.next()?;
                 Ok(Value::Material(Rc::new(self.material_body()?)))
             }
-            MEDIA_KW | DENSITY_KW | NORMAL_MAP_KW | TEXTURE_MAP_KW | SLOPE_MAP_KW
-            | DENSITY_MAP_KW | FOG_KW | RAINBOW_KW | SKY_SPHERE_KW => {
+            MEDIA_KW => {
+                self.next()?;
+                Ok(Value::Media(Rc::new(self.media_body()?)))
+            }
+            DENSITY_KW => {
+                self.next()?;
+                Ok(Value::Density(Rc::new(self.density_body()?)))
+            }
+            DENSITY_MAP_KW => {
+                self.next()?;
+                Ok(Value::DensityMap(Rc::new(self.density_map_body()?)))
+            }
+            FOG_KW => {
+                self.next()?;
+                Ok(Value::Fog(Rc::new(self.fog_body()?)))
+            }
+            RAINBOW_KW => {
+                self.next()?;
+                Ok(Value::Rainbow(Rc::new(self.rainbow_body()?)))
+            }
+            SKY_SPHERE_KW => {
+                self.next()?;
+                Ok(Value::SkySphere(Rc::new(self.sky_sphere_body()?)))
+            }
+            NORMAL_MAP_KW | TEXTURE_MAP_KW | SLOPE_MAP_KW => {
                 Err(self.unsupported(&token, &format!("declaring a {}", self.text(&token))))
             }
             _ => {

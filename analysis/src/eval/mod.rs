@@ -5,6 +5,7 @@
 //! error, located in the file where it happened, plus the warnings and `#debug` text met
 //! before it.
 
+mod atmosphere;
 mod builtins;
 mod camera;
 mod colour;
@@ -16,6 +17,7 @@ mod function_body;
 mod light;
 mod macros;
 mod math_shapes;
+mod media;
 mod normal_map;
 mod object;
 mod pattern_head;
@@ -215,7 +217,9 @@ pub(crate) struct Evaluator<'a> {
     objects: Vec<Object>,
     background: Option<crate::scene::Colour>,
     fogs: Vec<crate::scene::Fog>,
-    sky_spheres: Vec<crate::scene::SkySphere>,
+    rainbows: Vec<crate::scene::Rainbow>,
+    sky_sphere: Option<crate::scene::SkySphere>,
+    media: Vec<Arc<crate::scene::Media>>,
     settings: GlobalSettings,
     default_texture: Texture,
 }
@@ -252,7 +256,9 @@ impl<'a> Evaluator<'a> {
             objects: Vec::new(),
             background: None,
             fogs: Vec::new(),
-            sky_spheres: Vec::new(),
+            rainbows: Vec::new(),
+            sky_sphere: None,
+            media: Vec::new(),
             settings: GlobalSettings::default(),
             default_texture: Texture::default(),
         }
@@ -391,7 +397,9 @@ impl<'a> Evaluator<'a> {
             objects,
             background: self.background,
             fogs: std::mem::take(&mut self.fogs),
-            sky_spheres: std::mem::take(&mut self.sky_spheres),
+            rainbows: std::mem::take(&mut self.rainbows),
+            sky_sphere: self.sky_sphere.take(),
+            media: std::mem::take(&mut self.media),
             settings: self.settings.clone(),
             version: self.version_set.then_some(self.version),
         }

@@ -5,7 +5,7 @@ use super::math_shapes::MATH_SHAPES;
 use super::tokens::Token;
 use super::value::{MaterialValue, Value};
 use super::{Evaluator, Result};
-use crate::scene::{CsgOp, Interior, Light, Object, Shape, Texture, Transform};
+use crate::scene::{CsgOp, Light, Object, Shape, Texture, Transform};
 use glam::DVec3;
 use std::sync::Arc;
 use syntax::SyntaxKind::{self, *};
@@ -581,7 +581,7 @@ pub fn transform_object(object: &mut Object, t: &Transform) {
         transform_object(clip, t);
     }
     if let Some(interior) = &mut object.interior {
-        let _: &mut Interior = Arc::make_mut(interior);
+        super::media::transform_interior(Arc::make_mut(interior), t);
     }
 }
 

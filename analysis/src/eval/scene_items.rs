@@ -1,5 +1,5 @@
 //! The top level of a scene: objects, lights, the camera, `global_settings`, `background`
-//! and the atmospheric items.
+//! and the atmospheric items (`fog`, `rainbow`, `sky_sphere` and `media`).
 
 use super::{Evaluator, Result};
 use syntax::SyntaxKind::*;
@@ -42,9 +42,17 @@ impl Evaluator<'_> {
                     self.expect(R_BRACE, "'}'")?;
                     self.background = Some(colour);
                 }
-                FOG_KW | SKY_SPHERE_KW | RAINBOW_KW | MEDIA_KW => {
-                    return Err(self.unsupported(&token, self.text(&token)));
+                FOG_KW => {
+                    let fog = self.fog_body()?;
+                    self.fogs.push(fog);
                 }
+                RAINBOW_KW => {
+                    let rainbow = self.rainbow_body()?;
+                    self.rainbows.push(rainbow);
+                }
+                // A scene has one sky sphere; a later one replaces an earlier one.
+                SKY_SPHERE_KW => self.sky_sphere = Some(self.sky_sphere_body()?),
+                MEDIA_KW => self.atmospheric_media()?,
                 SEMICOLON => {}
                 IDENT => {
                     let message = match token.slot.as_ref().map(|s| s.borrow().type_name()) {

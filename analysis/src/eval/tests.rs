@@ -10,6 +10,24 @@ fn eval(text: &str) -> Evaluation {
     evaluate("scene.pov", &files, &EvalOptions::default())
 }
 
+/// The scene a 3.7 scene text describes; panics with the diagnostics if it has errors.
+pub(super) fn evaluate_ok(text: &str) -> Scene {
+    let evaluation = eval(&format!("#version 3.7;\n{text}"));
+    match evaluation.scene {
+        Some(scene) if !evaluation.has_errors() => scene,
+        _ => panic!("{:?}", evaluation.diagnostics),
+    }
+}
+
+/// The message of the error that stops a 3.7 scene text; panics when there is none.
+pub(super) fn evaluate_err(text: &str) -> String {
+    let evaluation = eval(&format!("#version 3.7;\n{text}"));
+    match evaluation.diagnostics.iter().find(|d| d.is_error()) {
+        Some(error) => error.message.clone(),
+        None => panic!("no error in {text}"),
+    }
+}
+
 /// The `#debug` output, or the rendered error.
 fn check_debug(text: &str, expect: Expect) {
     let evaluation = eval(&format!("#version 3.7;\n{text}"));

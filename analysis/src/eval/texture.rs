@@ -14,7 +14,7 @@ use std::sync::Arc;
 use syntax::SyntaxKind::{self, *};
 
 /// The number of entries a block pattern takes in place of a map.
-fn block_entries(kind: &PatternKind) -> Option<usize> {
+pub(super) fn block_entries(kind: &PatternKind) -> Option<usize> {
     match kind {
         PatternKind::Checker => Some(2),
         PatternKind::Brick { .. } => Some(2),
@@ -386,7 +386,7 @@ impl Evaluator<'_> {
     }
 
     /// A pattern keyword (already read) and the parameters that follow it directly.
-    fn pattern(&mut self, keyword: &Token) -> Result<Pattern> {
+    pub(super) fn pattern(&mut self, keyword: &Token) -> Result<Pattern> {
         let kind = match keyword.kind {
             AGATE_KW => PatternKind::Agate { turb: 1.0 },
             AVERAGE_KW => PatternKind::Average,
@@ -505,7 +505,11 @@ impl Evaluator<'_> {
     }
 
     /// A modifier of a pattern; false when `token` is not one.
-    fn pattern_modifier(&mut self, pattern: &mut Pattern, token: &Token) -> Result<bool> {
+    pub(super) fn pattern_modifier(
+        &mut self,
+        pattern: &mut Pattern,
+        token: &Token,
+    ) -> Result<bool> {
         if self.pattern_parameter(pattern, token)? {
             return Ok(true);
         }
@@ -673,18 +677,47 @@ impl Evaluator<'_> {
 
     /// `{ [value pigment{...}] ... }` after `pigment_map`.
     pub fn pigment_map_body(&mut self) -> Result<BlendMap<Pigment>> {
+        let declared = |value: &Value| match value {
+            Value::PigmentMap(map) => Some(BlendMap::clone(map)),
+            _ => None,
+        };
+        self.blend_map_body("pigment_map", declared, |ev| {
+            // An average's entries may leave out their weight, which is then 1.
+            let value = if ev.value_follows()? {
+                ev.float()?
+            } else {
+                1.0
+            };
+            ev.eat(COMMA)?;
+            let pigment = if ev.eat(PIGMENT_KW)? {
+                ev.pigment_body()?
+            } else {
+                ev.pigment_inner(None, R_BRACK)?
+            };
+            Ok((value, pigment))
+        })
+    }
+
+    /// `{ [entry] ... }` after a map keyword named `what`, each entry read by `entry`
+    /// between its brackets, or an identifier holding a map that `declared` accepts.
+    pub(super) fn blend_map_body<T>(
+        &mut self,
+        what: &str,
+        declared: impl Fn(&Value) -> Option<BlendMap<T>>,
+        mut entry: impl FnMut(&mut Self) -> Result<(f64, T)>,
+    ) -> Result<BlendMap<T>> {
         let open = self.next()?;
         if open.kind != L_BRACE {
-            return match open.slot.as_ref().map(|s| s.borrow().clone()) {
-                Some(Value::PigmentMap(map)) => Ok(BlendMap::clone(&map)),
-                _ => Err(self.error_at(
+            let map = open.slot.as_ref().and_then(|s| declared(&s.borrow()));
+            return map.ok_or_else(|| {
+                self.error_at(
                     &open,
                     format!(
-                        "expected '{{' or a pigment_map identifier, found {}",
+                        "expected '{{' or a {what} identifier, found {}",
                         self.describe(&open)
                     ),
-                )),
-            };
+                )
+            });
         }
         let mut entries = Vec::new();
         loop {
@@ -692,26 +725,14 @@ impl Evaluator<'_> {
             match token.kind {
                 R_BRACE => break,
                 L_BRACK => {
-                    // An average's entries may leave out their weight, which is then 1.
-                    let value = if self.value_follows()? {
-                        self.float()?
-                    } else {
-                        1.0
-                    };
-                    self.eat(COMMA)?;
-                    let pigment = if self.eat(PIGMENT_KW)? {
-                        self.pigment_body()?
-                    } else {
-                        self.pigment_inner(None, R_BRACK)?
-                    };
-                    entries.push((value, pigment));
+                    entries.push(entry(self)?);
                     self.expect(R_BRACK, "']'")?;
                 }
                 _ => {
                     return Err(self.error_at(
                         &token,
                         format!(
-                            "expected '[' or '}}' in pigment_map, found {}",
+                            "expected '[' or '}}' in {what}, found {}",
                             self.describe(&token)
                         ),
                     ));
@@ -719,7 +740,7 @@ impl Evaluator<'_> {
             }
         }
         if entries.is_empty() {
-            return Err(self.error_at(&open, "a pigment_map needs at least one entry"));
+            return Err(self.error_at(&open, format!("a {what} needs at least one entry")));
         }
         Ok(BlendMap { entries })
     }
@@ -1035,7 +1056,7 @@ impl Evaluator<'_> {
                 FADE_DISTANCE_KW => interior.fade_distance = self.float()?,
                 FADE_POWER_KW => interior.fade_power = self.float()?,
                 FADE_COLOR_KW | FADE_COLOUR_KW => interior.fade_colour = self.scene_colour()?,
-                MEDIA_KW => return Err(self.unsupported(&token, "media")),
+                MEDIA_KW => self.interior_media(&mut interior)?,
                 _ => {
                     return Err(self.error_at(
                         &token,
@@ -1219,7 +1240,7 @@ pub fn transform_texture(texture: &mut Texture, t: &Transform) {
     }
 }
 
-fn transform_pigment(pigment: &mut Pigment, t: &Transform) {
+pub(super) fn transform_pigment(pigment: &mut Pigment, t: &Transform) {
     if let Pigment::Pattern { pattern, map } = pigment {
         pattern.transform = pattern.transform.then(t);
         for (_, entry) in &mut map.entries {

@@ -3,7 +3,8 @@
 
 use crate::function::Function;
 use crate::scene::{
-    BlendMap, Camera, Colour, Finish, Interior, Light, Normal, Object, Pigment, Texture, Transform,
+    BlendMap, Camera, Colour, Finish, Fog, Interior, Light, Media, Normal, Object, Pigment,
+    Rainbow, SkySphere, Texture, Transform,
 };
 use std::cell::RefCell;
 use std::collections::BTreeMap;
@@ -107,6 +108,13 @@ pub enum Value {
     PigmentMap(Rc<BlendMap<Pigment>>),
     NormalMap(Rc<BlendMap<Normal>>),
     TextureMap(Rc<BlendMap<Texture>>),
+    Media(Rc<Media>),
+    /// A `density { }`, kept as the pigment whose colour is the density.
+    Density(Rc<Pigment>),
+    DensityMap(Rc<BlendMap<Pigment>>),
+    Fog(Rc<Fog>),
+    Rainbow(Rc<Rainbow>),
+    SkySphere(Rc<SkySphere>),
     Transform(Rc<Transform>),
     Function(std::sync::Arc<Function>),
     Spline(Rc<Spline>),
@@ -154,6 +162,12 @@ impl Value {
             Value::PigmentMap(_) => "pigment_map",
             Value::NormalMap(_) => "normal_map",
             Value::TextureMap(_) => "texture_map",
+            Value::Media(_) => "media",
+            Value::Density(_) => "density",
+            Value::DensityMap(_) => "density_map",
+            Value::Fog(_) => "fog",
+            Value::Rainbow(_) => "rainbow",
+            Value::SkySphere(_) => "sky_sphere",
             Value::Transform(_) => "transform",
             Value::Function(_) => "function",
             Value::Spline(_) => "spline",

@@ -3,22 +3,26 @@
 //! acceleration structures, precomputed transforms) from it. Anything the scene does not
 //! use is absent, so the renderer never pays for it.
 
+mod atmosphere;
 mod camera;
 mod colour;
 mod light;
 pub mod math_shapes;
+mod media;
 mod object;
 mod photons;
 mod settings;
 mod texture;
 mod transform;
 
+pub use atmosphere::{Fog, GroundFog, Rainbow, SkySphere};
 pub use camera::{Camera, CameraKind, FocalBlur};
 pub use colour::Colour;
 pub use light::{AreaLight, Light, LightKind};
+pub use media::{Media, Scattering, ScatteringKind};
 pub use object::{CsgOp, Interior, Object, ObjectFlags, Shape};
 pub use photons::{LightPhotons, ObjectPhotons, PhotonDensity, Photons};
-pub use settings::{Fog, GlobalSettings, GroundFog, Radiosity, SkySphere};
+pub use settings::{GlobalSettings, Radiosity};
 pub use texture::{
     BlendMap, Finish, Fractal, FractalKind, Normal, NormalKind, Pattern, PatternKind, Pigment,
     Reflection, Texture, Turbulence, Warp, WaveType,
@@ -36,7 +40,11 @@ pub struct Scene {
     /// `background { }`; `None` draws transparent black, as POV-Ray does.
     pub background: Option<Colour>,
     pub fogs: Vec<Fog>,
-    pub sky_spheres: Vec<SkySphere>,
+    pub rainbows: Vec<Rainbow>,
+    /// The last `sky_sphere { }`: a scene has one at most.
+    pub sky_sphere: Option<SkySphere>,
+    /// Atmospheric `media { }`, filling the space outside non-hollow objects.
+    pub media: Vec<std::sync::Arc<Media>>,
     pub settings: GlobalSettings,
     /// The `#version` in force at the end of parsing, if the scene gave one.
     pub version: Option<f64>,

@@ -2,7 +2,7 @@ use super::math_shapes::{
     Blob, HeightField, Isosurface, JuliaFractal, Lathe, Lemon, Parametric, Polynomial, Prism, Sor,
     SphereSweep, Text,
 };
-use super::{Colour, Light, ObjectPhotons, Origin, Texture, Transform};
+use super::{Colour, Light, Media, ObjectPhotons, Origin, Texture, Transform};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -115,7 +115,7 @@ pub struct ObjectFlags {
     pub inverse: bool,
 }
 
-/// What is inside an object: refraction, attenuation and (later) media.
+/// What is inside an object: refraction, attenuation and media.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Interior {
     pub ior: f64,
@@ -125,6 +125,8 @@ pub struct Interior {
     pub fade_distance: f64,
     pub fade_power: f64,
     pub fade_colour: Colour,
+    /// The `media { }` blocks, which show only inside hollow objects.
+    pub media: Vec<Arc<Media>>,
 }
 
 impl Default for Interior {
@@ -137,6 +139,7 @@ impl Default for Interior {
             fade_distance: 0.0,
             fade_power: 0.0,
             fade_colour: Colour::BLACK,
+            media: Vec::new(),
         }
     }
 }

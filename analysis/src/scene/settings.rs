@@ -1,4 +1,4 @@
-use super::{Colour, Photons, Pigment, Transform};
+use super::{Colour, Photons};
 use glam::DVec3;
 
 /// `global_settings { }`, with POV-Ray's defaults. `None` means the scene did not set it.
@@ -71,31 +71,4 @@ impl Default for Radiosity {
             adc_bailout: 0.01,
         }
     }
-}
-
-/// `fog { }`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Fog {
-    pub ground: Option<GroundFog>,
-    pub distance: f64,
-    pub colour: Colour,
-    pub turbulence: Option<super::Turbulence>,
-    pub turb_depth: f64,
-    pub transform: Transform,
-}
-
-/// The extra parameters of `fog_type 2`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct GroundFog {
-    pub offset: f64,
-    pub alt: f64,
-    pub up: DVec3,
-}
-
-/// `sky_sphere { }`: pigments layered on the sphere at infinity.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SkySphere {
-    pub pigments: Vec<Pigment>,
-    pub emission: Colour,
-    pub transform: Transform,
 }

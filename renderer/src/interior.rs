@@ -1,0 +1,48 @@
+//! An object's interior at run time: what refraction and attenuation need, whether the
+//! object is hollow (fog and atmospheric media fill only hollow objects and the space
+//! outside all objects), and its media ready to sample.
+
+use crate::media::Medium;
+use analysis::scene::{self, Colour};
+
+#[derive(Debug, Clone)]
+pub struct Interior {
+    pub ior: f64,
+    pub fade_distance: f64,
+    pub fade_power: f64,
+    pub fade_colour: Colour,
+    pub hollow: bool,
+    pub media: Vec<Medium>,
+}
+
+impl Interior {
+    /// `Err` names a feature of the interior's media not drawn yet. Without `with_media`
+    /// (quality levels below 9) the media are left out.
+    pub fn from_scene(
+        interior: &scene::Interior,
+        hollow: bool,
+        with_media: bool,
+    ) -> Result<Interior, String> {
+        let media = interior
+            .media
+            .iter()
+            .filter(|_| with_media)
+            .map(|m| Medium::from_scene(m))
+            .collect::<Result<Vec<_>, String>>()?;
+        Ok(Interior {
+            ior: interior.ior,
+            fade_distance: interior.fade_distance,
+            fade_power: interior.fade_power,
+            fade_colour: interior.fade_colour,
+            hollow,
+            media,
+        })
+    }
+}
+
+impl Default for Interior {
+    fn default() -> Self {
+        Interior::from_scene(&scene::Interior::default(), false, false)
+            .expect("the default interior has no media")
+    }
+}

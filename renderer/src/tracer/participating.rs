@@ -1,0 +1,195 @@
+//! How fog, rainbows, the sky sphere and media act on the rays the tracer follows. Kept
+//! beside the tracer so that scenes without them pay one flag test per ray.
+
+use super::{Tracer, greyscale};
+use crate::colour::Sample;
+use crate::interior::Interior;
+use crate::light::Incoming;
+use crate::media::{self, Incident, Passage};
+use crate::ray::{Ray, RayKind};
+use glam::DVec3;
+
+impl<'w> Tracer<'w> {
+    /// What a ray sees when it meets nothing: the sky sphere over the background, or the
+    /// background.
+    pub(super) fn missed(&self, ray: &Ray, kind: RayKind) -> Sample {
+        let world = self.world;
+        let reflected = kind == RayKind::Reflected;
+        let background = if reflected {
+            Sample::new(world.reflected_background, 0.0)
+        } else {
+            world.background
+        };
+        match &world.sky {
+            Some(sky) if reflected || !sky.reflections_only => {
+                sky.sample(ray.direction, background)
+            }
+            _ => background,
+        }
+    }
+
+    /// `sample`, seen along `ray` to `depth` (its parameter; infinite for a ray that met
+    /// nothing) through the media of the containers the ray is in, the atmospheric media,
+    /// rainbows and fogs. Inside a solid (not hollow) object none of them shows, as in
+    /// POV-Ray, where even a solid container's own media stay dark.
+    pub(super) fn participate(&mut self, ray: &Ray, depth: f64, sample: Sample) -> Sample {
+        let world = self.world;
+        let length = ray.direction.length();
+        if length == 0.0 {
+            return sample;
+        }
+        let unit = Ray::new(ray.origin, ray.direction / length);
+        let depth = depth * length;
+        if self.interiors.iter().any(|i| !i.hollow) {
+            return sample;
+        }
+        let inside = self.interiors.clone();
+        let atmosphere = world.atmosphere.clone();
+        let mut passage = Passage::CLEAR;
+        if depth.is_finite() {
+            let mut splits = Vec::new();
+            let scattering = inside
+                .iter()
+                .flat_map(|i| &i.media)
+                .chain(atmosphere.iter().flat_map(|a| &a.media))
+                .any(|m| m.scatters());
+            if scattering {
+                for light in world.lights.iter().filter(|l| l.media_interaction) {
+                    light.beam_crossings(&unit, (0.0, depth), &mut splits);
+                }
+                splits.sort_by(f64::total_cmp);
+            }
+            let seed = media::seed(&unit);
+            let interior_media = inside.iter().flat_map(|i| &i.media);
+            let atmospheric = atmosphere.iter().flat_map(|a| &a.media);
+            for (index, medium) in interior_media.chain(atmospheric).enumerate() {
+                let mut lighting = |p: DVec3, out: &mut Vec<Incident>| {
+                    self.media_lights(p, &inside, out);
+                };
+                let seed = seed ^ (index as u64 + 1).wrapping_mul(0xd6e8_feb8_6659_fd93);
+                let p = medium.passage(&unit, (0.0, depth), &splits, seed, &mut lighting);
+                passage.added += passage.transmittance * p.added;
+                passage.transmittance *= p.transmittance;
+            }
+        }
+        let mut seen = Sample::new(
+            sample.colour * passage.transmittance + passage.added,
+            sample.transmit * greyscale(passage.transmittance).clamp(0.0, 1.0),
+        );
+        if let Some(atmosphere) = atmosphere.filter(|a| a.has_veils()) {
+            seen = atmosphere.apply_veil(unit.origin, unit.direction, depth, seen);
+        }
+        seen
+    }
+
+    /// The light of every light source that interacts with media arriving at `p`, a media
+    /// sample inside the containers `inside`, after shadows.
+    fn media_lights(&mut self, p: DVec3, inside: &[&'w Interior], out: &mut Vec<Incident>) {
+        let world = self.world;
+        for light in world.lights.iter().filter(|l| l.media_interaction) {
+            let Some(incoming) = light.incoming(p) else {
+                continue;
+            };
+            let mut colour = incoming.colour;
+            if !light.shadowless && world.quality.shadows {
+                self.shadow_start.extend_from_slice(inside);
+                colour = self.filtered(p, incoming.direction, incoming.distance, colour);
+                self.shadow_start.clear();
+            }
+            if light.media_attenuation && world.atmosphere.is_some() {
+                colour *= self.atmospheric_attenuation(p, &incoming);
+            }
+            if colour != DVec3::ZERO {
+                out.push((incoming.direction, colour));
+            }
+        }
+    }
+
+    /// What fog and atmospheric media leave of a light on its way to `p`.
+    pub(super) fn atmospheric_attenuation(&self, p: DVec3, incoming: &Incoming) -> DVec3 {
+        let Some(atmosphere) = &self.world.atmosphere else {
+            return DVec3::ONE;
+        };
+        let end = p + incoming.direction * incoming.distance;
+        let mut through = atmosphere
+            .media
+            .iter()
+            .fold(DVec3::ONE, |t, m| t * m.transmittance(p, end));
+        if atmosphere.has_veils() {
+            through *= atmosphere
+                .veil(p, incoming.direction, incoming.distance)
+                .through;
+        }
+        through
+    }
+}
+
+/// The share of light the media of `interior` let through from `a` to `b`.
+pub(super) fn media_transmittance(interior: &Interior, a: DVec3, b: DVec3) -> DVec3 {
+    interior
+        .media
+        .iter()
+        .fold(DVec3::ONE, |t, m| t * m.transmittance(a, b))
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::build::{BuildSettings, build_world};
+    use crate::camera::Camera;
+    use crate::tracer::{Tracer, World};
+    use analysis::{EvalOptions, MemoryFiles, evaluate};
+    use glam::DVec3;
+
+    fn world(text: &str) -> World {
+        let files = MemoryFiles::new().with("scene.pov", format!("#version 3.7;\n{text}"));
+        let scene = evaluate("scene.pov", &files, &EvalOptions::default())
+            .scene
+            .expect("the scene evaluates");
+        let settings = BuildSettings {
+            quality: 9,
+            output_alpha: false,
+            max_trace_level: None,
+        };
+        build_world(&scene, settings).expect("the world builds")
+    }
+
+    /// The colour of the centre pixel of a 40 × 30 image.
+    fn centre(world: &World, text: &str) -> DVec3 {
+        let files = MemoryFiles::new().with("scene.pov", format!("#version 3.7;\n{text}"));
+        let scene = evaluate("scene.pov", &files, &EvalOptions::default())
+            .scene
+            .unwrap();
+        let camera = Camera::from_scene(&scene.camera).unwrap();
+        let ray = camera.ray(20.0, 15.0, 40.0, 30.0).unwrap();
+        Tracer::new(world).trace_primary(&ray).colour
+    }
+
+    #[test]
+    fn scenes_without_atmosphere_or_media_skip_the_check() {
+        let plain = world("sphere { 0, 1 pigment { rgb 1 } }");
+        assert!(!plain.participating && plain.camera_interiors.is_empty());
+        assert!(plain.atmosphere.is_none() && plain.sky.is_none());
+        let foggy = world("sphere { 0, 1 } fog { distance 3 rgb 1 }");
+        assert!(foggy.participating);
+        let media = world("sphere { 0, 1 hollow interior { media { emission 1 } } }");
+        assert!(media.participating && media.atmosphere.is_none());
+    }
+
+    #[test]
+    fn solid_objects_keep_media_and_fog_out() {
+        // The camera inside a solid box sees neither the fog nor a hollow container's
+        // glow, as in POV-Ray; made hollow, the box lets both show.
+        let scene = |hollow: &str| {
+            format!(
+                "camera {{ location <0, 0, -5> look_at 0 }}\n\
+                 box {{ -10, 10 {hollow} pigment {{ rgbt 1 }} }}\n\
+                 sphere {{ 0, 1 hollow pigment {{ rgbt 1 }} interior {{ media {{ emission 0.5 }} }} }}"
+            )
+        };
+        let solid = scene("");
+        assert_eq!(centre(&world(&solid), &solid), DVec3::ZERO);
+        let hollow = scene("hollow");
+        let glow = centre(&world(&hollow), &hollow);
+        assert!((glow - DVec3::ONE).abs().max_element() < 1e-9, "{glow}");
+    }
+}
