@@ -72,6 +72,49 @@ impl Picture {
         Picture::decode(&bytes).map_err(|e| format!("{}: {e}", path.display()))
     }
 
+    /// The picture seen at a coarser scale: each pixel the mean of the square of side
+    /// `2 radius + 1` around it (cut at the edges), as a viewer sees sampling noise.
+    pub fn blurred(&self, radius: usize) -> Picture {
+        let mut pixels = Vec::with_capacity(self.pixels.len());
+        for y in 0..self.height {
+            for x in 0..self.width {
+                let (x0, x1) = (x.saturating_sub(radius), (x + radius).min(self.width - 1));
+                let (y0, y1) = (y.saturating_sub(radius), (y + radius).min(self.height - 1));
+                let mut sum = [0.0; 4];
+                for yy in y0..=y1 {
+                    for xx in x0..=x1 {
+                        let p = self.pixels[yy * self.width + xx];
+                        for c in 0..4 {
+                            sum[c] += p[c];
+                        }
+                    }
+                }
+                let n = ((x1 - x0 + 1) * (y1 - y0 + 1)) as f64;
+                pixels.push(sum.map(|v| v / n));
+            }
+        }
+        Picture {
+            width: self.width,
+            height: self.height,
+            pixels,
+        }
+    }
+
+    /// The mean of the colour channels over each cell of a `columns` × `rows` grid, row by
+    /// row, on the 0-255 scale.
+    pub fn region_means(&self, columns: usize, rows: usize) -> Vec<f64> {
+        let mut sums = vec![(0.0, 0usize); columns * rows];
+        for y in 0..self.height {
+            for x in 0..self.width {
+                let cell = (y * rows / self.height) * columns + x * columns / self.width;
+                let p = self.pixels[y * self.width + x];
+                sums[cell].0 += (p[0] + p[1] + p[2]) / 3.0 * 255.0;
+                sums[cell].1 += 1;
+            }
+        }
+        sums.into_iter().map(|(s, n)| s / n.max(1) as f64).collect()
+    }
+
     fn channel(&self, x: usize, y: usize, c: usize) -> f64 {
         self.pixels[y * self.width + x][c]
     }

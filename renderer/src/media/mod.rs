@@ -10,8 +10,10 @@
 //! POV-Ray's renders show: a slab of constant emission `e` and absorption `a` and
 //! thickness `L`, with the default 10 samples, gives `e L (1 - q^6) / (6 (1 - q))` with
 //! `q = exp(-a L / 6)`, not the exact `e (1 - exp(-a L)) / a`.
-//! Method 2 samples the middle of `samples` equal steps, method 1 random points in them;
-//! jitter moves the samples by up to that share of a step, from a hash of the ray and the
+//! Method 2 samples the middle of `samples` equal steps, method 1 random points in them
+//! (`intervals` times as many); both take the minimum of `samples`: method 1's variance
+//! test for more samples up to the maximum (`confidence`, `variance`, `ratio`) is not done.
+//! Jitter moves the samples by up to that share of a step, from a hash of the ray and the
 //! sample's index, so that every thread count and the wasm build draw the same picture.
 
 mod phase;
