@@ -150,16 +150,11 @@ impl Function {
         }
     }
 
-    /// What this function uses that cannot be evaluated yet (a built-in without an
-    /// implementation, a pattern not written yet), directly or through the functions it
-    /// calls, as "not supported yet" names it.
+    /// What this function uses that cannot be evaluated yet (a pattern not written yet),
+    /// directly or through the functions it calls, as "not supported yet" names it.
     pub fn unsupported(&self) -> Option<String> {
         match &self.body {
             Body::Code(code) => code.iter().find_map(|op| match op {
-                Op::Internal(internal, _) => match internal.info() {
-                    Some(info) if info.eval.is_none() => Some(info.name.to_owned()),
-                    _ => None,
-                },
                 Op::Call(f, _) | Op::CallPart(f, _, _) => f.unsupported(),
                 Op::Sum { body, .. } => Function::code(Vec::new(), body.to_vec()).unsupported(),
                 _ => None,
