@@ -1,6 +1,7 @@
-//! Where scene and include texts come from. The evaluator never touches the file system
-//! itself: the CLI supplies files from its search paths, the Typst plugin from the
-//! document's `includes`, tests from memory. The standard includes are found last.
+//! Where scene and include texts, and the binary files a scene reads (images, fonts), come
+//! from. The evaluator never touches the file system itself: the CLI supplies files from its
+//! search paths, the Typst plugin from the document's `includes` and `files`, tests from
+//! memory. The standard includes are found last.
 
 use std::collections::BTreeMap;
 use std::sync::Arc;
@@ -10,14 +11,18 @@ use syntax::SourceResolver;
 pub trait FileSource {
     /// The text of `name`, or `None` when this source does not have it.
     fn read(&self, name: &str) -> Option<Arc<str>>;
+    /// The bytes of `name` (an image, a height field, a font), found by the same rules as
+    /// `read`, or `None` when this source does not have it.
+    fn read_bytes(&self, name: &str) -> Option<Arc<[u8]>>;
     /// Every name this source can supply, listed in "missing include" errors.
     fn names(&self) -> Vec<String>;
 }
 
-/// Files held in memory, such as the Typst package's `includes` dictionary.
+/// Files held in memory, such as the Typst package's `includes` and `files` dictionaries.
 #[derive(Debug, Clone, Default)]
 pub struct MemoryFiles {
     files: BTreeMap<String, Arc<str>>,
+    binary: BTreeMap<String, Arc<[u8]>>,
 }
 
 impl MemoryFiles {
@@ -34,6 +39,21 @@ impl MemoryFiles {
         self.insert(name, text);
         self
     }
+
+    /// Adds a file as bytes; if they are UTF-8 text, `#include` and `#fopen` can read it too.
+    pub fn insert_bytes(
+        &mut self,
+        name: impl Into<String>,
+        bytes: impl Into<Arc<[u8]>>,
+    ) -> &mut Self {
+        let name = name.into();
+        let bytes = bytes.into();
+        if let Ok(text) = std::str::from_utf8(&bytes) {
+            self.files.insert(name.clone(), Arc::from(text));
+        }
+        self.binary.insert(name, bytes);
+        self
+    }
 }
 
 impl FileSource for MemoryFiles {
@@ -41,8 +61,23 @@ impl FileSource for MemoryFiles {
         self.files.get(name).cloned()
     }
 
+    fn read_bytes(&self, name: &str) -> Option<Arc<[u8]>> {
+        match self.binary.get(name) {
+            Some(bytes) => Some(bytes.clone()),
+            None => self.files.get(name).map(|text| Arc::from(text.as_bytes())),
+        }
+    }
+
     fn names(&self) -> Vec<String> {
-        self.files.keys().cloned().collect()
+        let mut names: Vec<String> = self
+            .files
+            .keys()
+            .chain(self.binary.keys())
+            .cloned()
+            .collect();
+        names.sort();
+        names.dedup();
+        names
     }
 }
 
@@ -87,15 +122,20 @@ impl DirectoryFiles {
     }
 }
 
-impl FileSource for DirectoryFiles {
-    fn read(&self, name: &str) -> Option<Arc<str>> {
+impl DirectoryFiles {
+    fn candidates(&self, name: &str) -> Vec<std::path::PathBuf> {
         let relative = std::path::Path::new(name);
-        let candidates: Vec<std::path::PathBuf> = if relative.is_absolute() {
+        if relative.is_absolute() {
             vec![relative.to_path_buf()]
         } else {
             self.paths.iter().map(|dir| dir.join(relative)).collect()
-        };
-        candidates.into_iter().find_map(|path| {
+        }
+    }
+}
+
+impl FileSource for DirectoryFiles {
+    fn read(&self, name: &str) -> Option<Arc<str>> {
+        self.candidates(name).into_iter().find_map(|path| {
             let bytes = std::fs::read(path).ok()?;
             // POV-Ray scenes are often Latin-1; keep them readable rather than refusing them.
             Some(match String::from_utf8(bytes) {
@@ -109,6 +149,13 @@ impl FileSource for DirectoryFiles {
                 ),
             })
         })
+    }
+
+    fn read_bytes(&self, name: &str) -> Option<Arc<[u8]>> {
+        self.candidates(name)
+            .into_iter()
+            .find_map(|path| std::fs::read(path).ok())
+            .map(Arc::from)
     }
 
     fn names(&self) -> Vec<String> {

@@ -6,11 +6,13 @@
 pub mod db;
 pub mod eval;
 pub mod files;
+pub mod font;
 pub mod format;
 pub mod function;
 pub mod geometry;
 #[cfg(feature = "ide")]
 pub mod ide;
+pub mod image;
 pub mod lint;
 pub mod noise;
 pub mod pattern;

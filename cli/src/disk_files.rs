@@ -1,4 +1,4 @@
-//! Scene and include files from disk, for the evaluator: the scene by the path given on the
+//! Scene, include and data files (images, fonts) from disk, for the evaluator: the scene by the path given on the
 //! command line, includes by the name the scene uses, looked up in the scene's own directory
 //! and then in each library path (`-L`, POV-Ray's `Library_Path`), as POV-Ray does. The
 //! standard includes come after these, from the evaluator itself.
@@ -54,6 +54,12 @@ impl FileSource for DiskFiles {
     fn read(&self, name: &str) -> Option<Arc<str>> {
         self.candidates(name)
             .find_map(|candidate| std::fs::read_to_string(candidate).ok())
+            .map(Arc::from)
+    }
+
+    fn read_bytes(&self, name: &str) -> Option<Arc<[u8]>> {
+        self.candidates(name)
+            .find_map(|candidate| std::fs::read(candidate).ok())
             .map(Arc::from)
     }
 

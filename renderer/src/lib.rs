@@ -4,6 +4,7 @@
 mod atmosphere;
 mod bounds;
 mod build;
+mod bump_map;
 mod bvh;
 mod camera;
 mod colour;

@@ -3,9 +3,10 @@
 //! point. Features not implemented yet are refused when
 //! the material is built, with a message naming them, rather than drawn wrongly.
 
-use analysis::pattern::{self, PatternValue};
+use analysis::pattern::{self, PatternValue, bitmap};
+use analysis::scene::bitmap::ImageMap;
 use analysis::scene::{self, Colour, Finish};
-use glam::DVec3;
+use glam::{DAffine3, DVec3};
 use std::sync::Arc;
 
 /// One layer of a texture: its colour, bumps and finish.
@@ -112,6 +113,11 @@ pub enum Pigment {
         /// Map values ascending, with their pigments.
         map: Vec<(f64, Pigment)>,
     },
+    /// An image map, with the transform from the world into its pattern space.
+    Image {
+        map: Arc<ImageMap>,
+        to_pattern: DAffine3,
+    },
 }
 
 impl Pigment {
@@ -126,6 +132,9 @@ impl Pigment {
                     map[a].1.colour_at(p).lerp(map[b].1.colour_at(p), t)
                 }
             }
+            Pigment::Image { map, to_pattern } => {
+                bitmap::image_map_colour(map, to_pattern.transform_point3(p))
+            }
         }
     }
 
@@ -134,6 +143,12 @@ impl Pigment {
         match self {
             Pigment::Solid(c) => c.filter != 0.0 || c.transmit != 0.0,
             Pigment::Pattern { map, .. } => map.iter().any(|(_, p)| p.may_transmit()),
+            Pigment::Image { map, .. } => {
+                map.bitmap.image.has_alpha
+                    || map.bitmap.once
+                    || !map.filter.is_empty()
+                    || !map.transmit.is_empty()
+            }
         }
     }
 }
@@ -203,6 +218,10 @@ fn layer_from_scene(texture: &scene::Texture) -> Result<Layer, String> {
 pub(crate) fn pigment_from_scene(pigment: &scene::Pigment) -> Result<Pigment, String> {
     match pigment {
         scene::Pigment::Solid(c) => Ok(Pigment::Solid(*c)),
+        scene::Pigment::Image { map, transform } => Ok(Pigment::Image {
+            map: Arc::new(ImageMap::clone(map)),
+            to_pattern: transform.inverse,
+        }),
         scene::Pigment::Pattern { pattern, map } => {
             pattern::check(pattern)?;
             let mut entries = map

@@ -29,6 +29,7 @@ pub fn check(normal: &scene::Normal) -> Result<(), String> {
             pattern::check(pattern)?;
             map.entries.iter().try_for_each(|(_, n)| check(n))
         }
+        NormalKind::BumpMap { pattern, .. } => pattern::check(pattern),
     }
 }
 
@@ -53,6 +54,12 @@ pub fn perturb(normal: &scene::Normal, p: DVec3, n: DVec3) -> DVec3 {
             )
         }
         NormalKind::Map { pattern, map } => mapped(pattern, map, p, n),
+        NormalKind::BumpMap { pattern, bump_size } => {
+            let local = pattern.transform.inverse.transform_point3(p);
+            let local_normal = (into_pattern_space(pattern) * n).normalize_or_zero();
+            let bumped = crate::bump_map::perturb(pattern, *bump_size, local, local_normal);
+            (out_of_pattern_space(pattern) * bumped).normalize_or_zero()
+        }
     };
     if perturbed == DVec3::ZERO || !perturbed.is_finite() {
         n

@@ -53,6 +53,7 @@ impl FidelityScene {
         files.insert(name, source);
         if let Some(dir) = path.parent() {
             add_includes(dir, &mut files);
+            add_assets(dir, &mut files);
         }
         let rendered =
             renderer::pipeline::render_source(name, &files, &options).map_err(|f| f.to_human())?;
@@ -79,6 +80,22 @@ fn add_includes(dir: &Path, files: &mut analysis::MemoryFiles) {
             )
         {
             files.insert(name, text);
+        }
+    }
+}
+
+/// The images and fonts in the `assets` folder beside a scene, by the names the scenes
+/// use for them (`assets/map.png`).
+fn add_assets(dir: &Path, files: &mut analysis::MemoryFiles) {
+    let Ok(entries) = std::fs::read_dir(dir.join("assets")) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        if let (Some(name), Ok(bytes)) = (
+            entry.file_name().to_str().map(|n| format!("assets/{n}")),
+            std::fs::read(entry.path()),
+        ) {
+            files.insert_bytes(name, bytes);
         }
     }
 }

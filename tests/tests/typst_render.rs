@@ -109,6 +109,44 @@ fn none_keeps_povray_defaults_and_every_argument_is_accepted() {
     assert_eq!(result["encoding"], "rgb8");
 }
 
+/// A PNG of `width` by `height` RGB pixels.
+fn png_bytes(width: u32, height: u32, rgb: &[u8]) -> Vec<u8> {
+    let mut bytes = Vec::new();
+    let mut encoder = png::Encoder::new(&mut bytes, width, height);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    let mut writer = encoder.write_header().unwrap();
+    writer.write_image_data(rgb).unwrap();
+    writer.finish().unwrap();
+    bytes
+}
+
+#[test]
+fn an_image_map_from_files_colours_the_render() {
+    // Red on the left, blue on the right, filling the view; `#fopen` reads a text file
+    // passed the same way.
+    let doc = Document::new(&format!(
+        "{IMPORT}#let r = try-render(read(\"scene.pov\"), width: 4, height: 2, antialias: false,
+  files: (\"map.png\": read(\"map.png\", encoding: none), \"size.txt\": read(\"size.txt\")))
+#metadata((error: r.error, pixels: r.pixels)) <result>
+"
+    ))
+    .with_file(
+        "scene.pov",
+        "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n#fopen F \"size.txt\" read\n#read (F, S)\n\
+         camera { orthographic location <0.5, 0.5, -1> look_at <0.5, 0.5, 0> right x * S up y * S / 2 }\n\
+         plane { -z, 0 pigment { image_map { png \"map.png\" } } finish { ambient 1 diffuse 0 } }\n",
+    )
+    .with_file("map.png", png_bytes(2, 1, &[255, 0, 0, 0, 0, 255]))
+    .with_file("size.txt", "1\n");
+    let result = doc.query("<result>").unwrap();
+    assert_eq!(result["error"], Value::Null, "{result}");
+    let red = [255, 0, 0];
+    let blue = [0, 0, 255];
+    let expected: Vec<u8> = [red, red, blue, blue, red, red, blue, blue].concat();
+    assert_eq!(result["pixels"], serde_json::json!(expected));
+}
+
 #[test]
 fn includes_are_read_by_the_evaluator() {
     let doc = Document::new(&format!(
@@ -222,8 +260,13 @@ fn scene_errors_are_the_gcc_style_report() {
             ", includes: (\"a.inc\": \"#include \\\"b.inc\\\"\\n\", \"b.inc\": \"#include \\\"a.inc\\\"\\n\")",
         ),
         (
-            "binary file",
-            "sphere { 0, 1 }\n",
+            "missing image",
+            "plane { -z, 0 pigment { image_map { png \"missing.png\" } } }\n",
+            ", files: (\"map.png\": bytes((137, 80, 78, 71)), \"data.txt\": \"1, 2\")",
+        ),
+        (
+            "corrupt image",
+            "plane { -z, 0 pigment { image_map { png \"map.png\" } } }\n",
             ", files: (\"map.png\": bytes((137, 80, 78, 71)))",
         ),
         (
@@ -276,8 +319,9 @@ fn scene_errors_are_the_gcc_style_report() {
         scene.pov:1:10: note: in 'a.inc' included here
             1 | #include "a.inc"
               |          ^~~~~~~
-        --- binary file
-        plugin errored with: files: map.png: not supported yet: binary files (image maps, height fields, fonts)
+        --- missing image
+        --- corrupt image
         --- unknown extra option
-        plugin errored with: extra: option `Frobnicate=on`: unknown option"#]].assert_eq(&reports.join("\n"));
+        plugin errored with: extra: option `Frobnicate=on`: unknown option"#]]
+    .assert_eq(&reports.join("\n"));
 }

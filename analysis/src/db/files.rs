@@ -142,6 +142,16 @@ impl FileSource for ProjectFiles<'_> {
         }
     }
 
+    /// Images and fonts are read from disk as the CLI reads them, so that the server reports
+    /// the same errors about them; the database never holds them, since they are not text.
+    fn read_bytes(&self, name: &str) -> Option<Arc<[u8]>> {
+        match resolve_include(self.db, self.main, name)? {
+            Resolved::File(file) => Some(Arc::from(file.text(self.db).as_bytes())),
+            Resolved::OnDisk(path) => std::fs::read(path).ok().map(Arc::from),
+            Resolved::Bundled(_) => None,
+        }
+    }
+
     /// The `.inc` files of the scene's directory and the library paths, as the CLI lists
     /// them in "cannot find include file" errors.
     fn names(&self) -> Vec<String> {

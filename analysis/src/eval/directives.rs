@@ -851,15 +851,7 @@ impl Evaluator<'_> {
         self.unget(at.clone());
         let name = self.string()?;
         let Some(file) = self.load(&name) else {
-            let mut available = self.source.names();
-            available.retain(|n| n != &self.files[0].name);
-            let list = if available.is_empty() {
-                "none".to_owned()
-            } else {
-                available.join(", ")
-            };
-            let mut error = self.error_at(&at, format!("cannot find include file '{name}'"));
-            error.notes.push(format!("files available: {list}"));
+            let mut error = self.missing_file(&at, &name, "include");
             error.notes.push(format!(
                 "standard includes: {}",
                 crate::stdinc::names().collect::<Vec<_>>().join(", ")

@@ -8,7 +8,7 @@ use super::tokens::Token;
 use super::{Evaluator, Result};
 use crate::function::Function;
 use crate::scene::math_shapes::{
-    Blob, BlobComponent, BlobShape, Container, HeightField, Isosurface, JuliaAlgebra, JuliaFractal,
+    Blob, BlobComponent, BlobShape, Container, Isosurface, JuliaAlgebra, JuliaFractal,
     JuliaFunction, Lathe, Lemon, Parametric, PolyTerm, Polynomial, Prism, PrismSweep, Sor,
     SphereSweep, SplineKind,
 };
@@ -40,9 +40,6 @@ pub const MATH_SHAPES: &[SyntaxKind] = &[
 /// The most points one lathe, sor, prism or sweep may have, so that a runaway count is an
 /// error rather than an allocation that never ends.
 const MAX_POINTS: i64 = 1 << 24;
-
-/// The largest grid a function height field may ask for.
-const MAX_FIELD_SAMPLES: i64 = 1 << 24;
 
 impl Evaluator<'_> {
     /// The shape of a mathematical shape statement whose keyword is `keyword`, read from
@@ -766,66 +763,8 @@ impl Evaluator<'_> {
         })))
     }
 
-    /// `function ResX, ResY { f } [smooth] [water_level w] [hierarchy]` inside
-    /// `height_field`.
-    fn height_field(&mut self, keyword: &Token) -> Result<Shape> {
-        let token = self.next()?;
-        if token.kind != FUNCTION_KW {
-            return Err(self.unsupported(&token, "height_field from an image file"));
-        }
-        let columns = self.int()?;
-        self.eat(COMMA)?;
-        let rows = self.int()?;
-        if columns < 2 || rows < 2 || columns.saturating_mul(rows) > MAX_FIELD_SAMPLES {
-            return Err(self.error_at(
-                &token,
-                format!("a function height field needs 2 to {MAX_FIELD_SAMPLES} samples, at least 2 each way, not {columns} by {rows}"),
-            ));
-        }
-        let function = self.function_body_after_keyword(&token)?;
-        let (columns, rows) = (columns as usize, rows as usize);
-        let mut heights = Vec::with_capacity(columns * rows);
-        for row in 0..rows {
-            for column in 0..columns {
-                let x = column as f64 / (columns - 1) as f64;
-                let y = row as f64 / (rows - 1) as f64;
-                let v = function.eval(&[x, y, 0.0]);
-                heights.push(if v.is_finite() {
-                    v.clamp(0.0, 1.0) as f32
-                } else {
-                    0.0
-                });
-            }
-        }
-        let mut field = HeightField {
-            columns,
-            rows,
-            heights: heights.into(),
-            smooth: false,
-            water_level: 0.0,
-            hierarchy: true,
-        };
-        self.height_field_modifiers(keyword, &mut field)?;
-        Ok(Shape::HeightField(Box::new(field)))
-    }
-
-    fn height_field_modifiers(&mut self, _keyword: &Token, field: &mut HeightField) -> Result<()> {
-        loop {
-            let token = self.next()?;
-            match token.kind {
-                SMOOTH_KW => field.smooth = self.optional_bool()?,
-                WATER_LEVEL_KW => field.water_level = self.float()?,
-                HIERARCHY_KW => field.hierarchy = self.optional_bool()?,
-                _ => {
-                    self.unget(token);
-                    return Ok(());
-                }
-            }
-        }
-    }
-
     /// A function body `{ ... }` of x, y, z, the `function` keyword already read.
-    fn function_body_after_keyword(&mut self, keyword: &Token) -> Result<Function> {
+    pub(super) fn function_body_after_keyword(&mut self, keyword: &Token) -> Result<Function> {
         self.unget(keyword.clone());
         let function = self.function_value()?;
         if let Some(missing) = function.unsupported() {

@@ -6,6 +6,7 @@
 //! before it.
 
 mod atmosphere;
+mod bitmap;
 mod builtins;
 mod camera;
 mod colour;
@@ -14,6 +15,7 @@ mod directives;
 mod expr;
 mod file_io;
 mod function_body;
+mod height_field;
 mod light;
 mod macros;
 mod math_shapes;
@@ -27,6 +29,7 @@ mod scene_items;
 mod spline;
 mod stream;
 mod symbols;
+mod text;
 mod texture;
 mod tokens;
 mod transform;
@@ -204,6 +207,8 @@ pub(crate) struct Evaluator<'a> {
     written: std::collections::BTreeMap<String, String>,
     /// Files being included, innermost last, to catch cycles.
     include_stack: Vec<FileId>,
+    /// Images decoded so far, by the name the scene used, so each is decoded once.
+    images: HashMap<String, Arc<crate::image::Image>>,
     steps: u64,
     loop_iterations: u64,
     macro_depth: usize,
@@ -242,6 +247,7 @@ impl<'a> Evaluator<'a> {
             pushed: Vec::new(),
             declaring: Vec::new(),
             include_stack: Vec::new(),
+            images: HashMap::new(),
             written: std::collections::BTreeMap::new(),
             steps: 0,
             loop_iterations: 0,

@@ -49,6 +49,12 @@ impl Evaluator<'_> {
             NormalKind::Pattern { pattern, .. } | NormalKind::Map { pattern, .. } => {
                 pattern.clone()
             }
+            NormalKind::BumpMap { .. } => {
+                return Err(self.error_at(
+                    keyword,
+                    format!("a bump_map takes no {}", self.text(keyword)),
+                ));
+            }
         };
         if keyword.kind == NORMAL_MAP_KW {
             let map = self.normal_map_body()?;
@@ -58,7 +64,7 @@ impl Evaluator<'_> {
         let profile = self.slope_map_body()?;
         match &mut current.kind {
             NormalKind::Pattern { slope_map, .. } => *slope_map = Some(profile),
-            NormalKind::Map { .. } => {
+            NormalKind::Map { .. } | NormalKind::BumpMap { .. } => {
                 return Err(self.error_at(keyword, "a slope_map cannot follow a normal_map"));
             }
         }

@@ -17,7 +17,6 @@ const UNSUPPORTED_SHAPES: &[SyntaxKind] = &[
     MESH_KW,
     MESH2_KW,
     POLYGON_KW,
-    TEXT_KW,
 ];
 
 impl Evaluator<'_> {
@@ -40,6 +39,7 @@ impl Evaluator<'_> {
                 | DIFFERENCE_KW
                 | MERGE_KW
                 | OBJECT_KW
+                | TEXT_KW
         ) || UNSUPPORTED_SHAPES.contains(&kind)
             || MATH_SHAPES.contains(&kind)
     }
@@ -223,6 +223,7 @@ impl Evaluator<'_> {
                 }
             }
             kind if MATH_SHAPES.contains(&kind) => Object::new(self.math_shape(&keyword)?, origin),
+            TEXT_KW => Object::new(self.text_shape(&keyword)?, origin),
             kind if UNSUPPORTED_SHAPES.contains(&kind) => {
                 return Err(self.unsupported(&keyword, self.text(&keyword)));
             }

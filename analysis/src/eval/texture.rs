@@ -276,7 +276,11 @@ impl Evaluator<'_> {
                 self.unget(first);
                 Pigment::Solid(self.scene_colour()?)
             }
-            IMAGE_MAP_KW | DENSITY_FILE_KW => {
+            IMAGE_MAP_KW => Pigment::Image {
+                map: Box::new(self.image_map_body()?),
+                transform: Transform::IDENTITY,
+            },
+            DENSITY_FILE_KW => {
                 return Err(self.unsupported(&first, self.text(&first)));
             }
             kind if pattern_keyword(kind) => {
@@ -325,6 +329,13 @@ impl Evaluator<'_> {
                         }
                     }
                 }
+            } else if matches!(pigment, Pigment::Image { .. })
+                && matches!(
+                    token.kind,
+                    TURBULENCE_KW | WARP_KW | OCTAVES_KW | OMEGA_KW | LAMBDA_KW
+                )
+            {
+                return Err(self.unsupported(&token, "warps and turbulence on an image_map"));
             } else if matches!(token.kind, QUICK_COLOR_KW | QUICK_COLOUR_KW) {
                 self.colour()?;
                 continue;
@@ -442,6 +453,7 @@ impl Evaluator<'_> {
                 self.unget(keyword.clone());
                 PatternKind::Function(Arc::new(self.function_value()?))
             }
+            IMAGE_PATTERN_KW => PatternKind::Image(Box::new(self.image_pattern_body()?)),
             _ => match self.pattern_head(keyword)? {
                 Some(pattern) => pattern,
                 None => {
@@ -781,7 +793,16 @@ impl Evaluator<'_> {
                 }
                 None => return Err(self.undeclared(&first)),
             },
-            BUMP_MAP_KW => return Err(self.unsupported(&first, "bump_map")),
+            BUMP_MAP_KW => {
+                let (image, bump_size) = self.bump_map_body()?;
+                Some(Normal {
+                    kind: NormalKind::BumpMap {
+                        pattern: Box::new(Pattern::new(PatternKind::Image(Box::new(image)))),
+                        bump_size,
+                    },
+                    accuracy: 0.02,
+                })
+            }
             kind if pattern_keyword(kind) => {
                 let pattern = self.pattern(&first)?;
                 let listed = match block_entries(&pattern.kind) {
@@ -838,16 +859,20 @@ impl Evaluator<'_> {
                 if let Some(normal) = &mut normal {
                     if token.kind == ACCURACY_KW {
                         normal.accuracy = value;
-                    } else if let NormalKind::Pattern { bump_size, .. } = &mut normal.kind {
+                    } else if let NormalKind::Pattern { bump_size, .. }
+                    | NormalKind::BumpMap { bump_size, .. } = &mut normal.kind
+                    {
                         *bump_size = value;
                     }
                 }
                 continue;
             }
             let pattern = match normal.as_mut().map(|n| &mut n.kind) {
-                Some(NormalKind::Pattern { pattern, .. } | NormalKind::Map { pattern, .. }) => {
-                    Some(pattern)
-                }
+                Some(
+                    NormalKind::Pattern { pattern, .. }
+                    | NormalKind::Map { pattern, .. }
+                    | NormalKind::BumpMap { pattern, .. },
+                ) => Some(pattern),
                 None => None,
             };
             if let Some(pattern) = pattern
@@ -1241,17 +1266,23 @@ pub fn transform_texture(texture: &mut Texture, t: &Transform) {
 }
 
 pub(super) fn transform_pigment(pigment: &mut Pigment, t: &Transform) {
-    if let Pigment::Pattern { pattern, map } = pigment {
-        pattern.transform = pattern.transform.then(t);
-        for (_, entry) in &mut map.entries {
-            transform_pigment(entry, t);
+    match pigment {
+        Pigment::Pattern { pattern, map } => {
+            pattern.transform = pattern.transform.then(t);
+            for (_, entry) in &mut map.entries {
+                transform_pigment(entry, t);
+            }
         }
+        Pigment::Image { transform, .. } => *transform = transform.then(t),
+        Pigment::Solid(_) => {}
     }
 }
 
 fn transform_normal(normal: &mut Normal, t: &Transform) {
     match &mut normal.kind {
-        NormalKind::Pattern { pattern, .. } => pattern.transform = pattern.transform.then(t),
+        NormalKind::Pattern { pattern, .. } | NormalKind::BumpMap { pattern, .. } => {
+            pattern.transform = pattern.transform.then(t);
+        }
         NormalKind::Map { pattern, map } => {
             pattern.transform = pattern.transform.then(t);
             for (_, entry) in &mut map.entries {

@@ -5,6 +5,7 @@
 //! then give a value that frequency, phase and the wave type shape into 0..1; block
 //! patterns (checker, hexagon, brick...) name a map entry directly.
 
+pub mod bitmap;
 mod blocks;
 pub mod cells;
 mod fractal;
@@ -56,7 +57,7 @@ pub fn check(pattern: &Pattern) -> Result<(), String> {
 /// Whether every pattern of a pigment can be evaluated; `Err` names the first that cannot.
 pub fn check_pigment(pigment: &Pigment) -> Result<(), String> {
     match pigment {
-        Pigment::Solid(_) => Ok(()),
+        Pigment::Solid(_) | Pigment::Image { .. } => Ok(()),
         Pigment::Pattern { pattern, map } => {
             check(pattern)?;
             map.entries.iter().try_for_each(|(_, p)| check_pigment(p))
@@ -98,6 +99,9 @@ pub fn blend_position(
 pub fn pigment_colour(pigment: &Pigment, world: DVec3) -> Colour {
     match pigment {
         Pigment::Solid(c) => *c,
+        Pigment::Image { map, transform } => {
+            bitmap::image_map_colour(map, transform.inverse.transform_point3(world))
+        }
         Pigment::Pattern { pattern, map } => {
             let entries = &map.entries;
             if entries.is_empty() {
@@ -320,6 +324,7 @@ fn blend_value(kind: &PatternKind, p: DVec3) -> f64 {
         PatternKind::Quilted { control0, control1 } => spiral::quilted(p, *control0, *control1),
         PatternKind::Fractal(f) => fractal::value(f, p),
         PatternKind::Function(f) => f.eval(&[p.x, p.y, p.z]),
+        PatternKind::Image(image) => bitmap::image_value(image, p),
         _ => 0.0,
     }
 }

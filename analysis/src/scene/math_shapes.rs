@@ -240,11 +240,32 @@ pub struct HeightField {
     pub hierarchy: bool,
 }
 
-/// `text { ttf "font" "string", thickness, offset }`: glyph outlines extruded along z.
+/// One piece of a glyph's outline: a line, or a quadratic or cubic Bézier curve, from its
+/// first point to its last.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum OutlineSegment {
+    Line(DVec2, DVec2),
+    Quad(DVec2, DVec2, DVec2),
+    Cubic(DVec2, DVec2, DVec2, DVec2),
+}
+
+impl OutlineSegment {
+    /// The end and control points.
+    pub fn points(&self) -> Vec<DVec2> {
+        match *self {
+            OutlineSegment::Line(a, b) => vec![a, b],
+            OutlineSegment::Quad(a, b, c) => vec![a, b, c],
+            OutlineSegment::Cubic(a, b, c, d) => vec![a, b, c, d],
+        }
+    }
+}
+
+/// `text { ttf "font" "string", thickness, offset }`: glyph outlines extruded along z from
+/// 0 to the thickness.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Text {
-    /// The outlines in em units (1 = the font's em), each a closed polygon of points in
-    /// the x-y plane, already laid out along the string.
-    pub contours: Arc<[Vec<DVec2>]>,
+    /// Each glyph's closed contours in ems (1 = the font's em) in the x-y plane, already
+    /// laid out along the string. Inside is where the contours wind around a point.
+    pub glyphs: Arc<[Vec<OutlineSegment>]>,
     pub thickness: f64,
 }

@@ -4,6 +4,7 @@
 //! use is absent, so the renderer never pays for it.
 
 mod atmosphere;
+pub mod bitmap;
 mod camera;
 mod colour;
 mod light;

@@ -126,6 +126,8 @@ pub enum PatternKind {
     /// `mandel N`, `julia <c>, N`, `magnet 1|2 mandel|julia N`: escape-time fractals, with
     /// their `exponent`, `interior` and `exterior` colouring.
     Fractal(Box<Fractal>),
+    /// `image_pattern { }`, and the heights of a `bump_map`.
+    Image(Box<super::bitmap::ImagePattern>),
 }
 
 /// The parameters of the fractal patterns.
@@ -195,6 +197,11 @@ pub enum Pigment {
         pattern: Box<Pattern>,
         map: BlendMap<Pigment>,
     },
+    /// `image_map { }`, placed by the transform (pattern space to the world).
+    Image {
+        map: Box<super::bitmap::ImageMap>,
+        transform: Transform,
+    },
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -205,6 +212,13 @@ pub enum NormalKind {
         pattern: Box<Pattern>,
         bump_size: f64,
         slope_map: Option<BlendMap<(f64, f64)>>,
+    },
+    /// `bump_map { }`: the image's values as heights, tilting the normal along the
+    /// image's axes by their slope across a pixel.
+    BumpMap {
+        /// Of kind [`PatternKind::Image`].
+        pattern: Box<Pattern>,
+        bump_size: f64,
     },
     /// A `normal_map`.
     Map {

@@ -3,10 +3,12 @@
 //! simple shapes they may take many steps to find a crossing, so they also answer "the
 //! nearest crossing in an interval" directly, which lets them stop early.
 
+use super::height_field::HeightField;
 use super::isosurface::{FieldFunction, GradientRecord, Isosurface};
 use super::julia::{self, Julia};
 use super::poly::Poly;
 use super::sphere_sweep::SphereSweep;
+use super::text::Text;
 use super::{Root, Roots};
 use crate::bounds::Aabb;
 use crate::ray::Ray;
@@ -20,6 +22,8 @@ pub enum MathShape {
     Isosurface(Isosurface),
     Julia(Julia),
     SphereSweep(SphereSweep),
+    HeightField(HeightField),
+    Text(Text),
 }
 
 /// Something a shape found out while rendering that the scene's author should hear, as
@@ -98,6 +102,10 @@ pub fn build(
         ))),
         scene::Shape::SphereSweep(s) => Ok(SphereSweep::new(s.kind, &s.spheres, s.tolerance)
             .map(|sweep| (MathShape::SphereSweep(sweep), identity))),
+        scene::Shape::HeightField(field) => {
+            Ok(HeightField::new(field).map(|f| (MathShape::HeightField(f), identity)))
+        }
+        scene::Shape::Text(text) => Ok(Text::new(text).map(|t| (MathShape::Text(t), identity))),
         other => Err(format!("not supported yet: {}", shape_name(other))),
     };
     built
@@ -114,8 +122,6 @@ fn shape_name(shape: &scene::Shape) -> &'static str {
         scene::Shape::Superellipsoid { .. } => "superellipsoid",
         scene::Shape::Ovus { .. } => "ovus",
         scene::Shape::Lemon(_) => "lemon",
-        scene::Shape::HeightField(_) => "height_field",
-        scene::Shape::Text(_) => "text",
         _ => "this shape",
     }
 }
@@ -162,6 +168,8 @@ impl MathShape {
                 }
             }
             MathShape::SphereSweep(s) => s.intersect(ray, roots),
+            MathShape::HeightField(s) => s.intersect(ray, roots),
+            MathShape::Text(s) => s.intersect(ray, roots),
         }
     }
 
@@ -181,6 +189,8 @@ impl MathShape {
             }
             MathShape::Julia(s) => return julia::first_root(s, ray, tmin, tmax),
             MathShape::SphereSweep(s) => s.first_hit(ray, tmin, tmax),
+            MathShape::HeightField(s) => return s.first_hit(ray, tmin, tmax),
+            MathShape::Text(s) => return s.first_hit(ray, tmin, tmax),
         };
         t.map(|t| Root { t, part: 0 })
     }
@@ -191,6 +201,8 @@ impl MathShape {
             MathShape::Isosurface(s) => s.inside(p),
             MathShape::Julia(s) => s.inside_point(p),
             MathShape::SphereSweep(s) => s.inside(p),
+            MathShape::HeightField(s) => s.inside(p),
+            MathShape::Text(s) => s.inside(p),
         }
     }
 
@@ -200,6 +212,8 @@ impl MathShape {
             MathShape::Isosurface(s) => s.normal(p, part),
             MathShape::Julia(s) => s.normal(p),
             MathShape::SphereSweep(s) => s.normal(p),
+            MathShape::HeightField(s) => s.normal(p),
+            MathShape::Text(s) => s.normal(p, part),
         }
     }
 
@@ -212,6 +226,8 @@ impl MathShape {
             }
             MathShape::Julia(s) => Aabb::new(DVec3::splat(-s.radius), DVec3::splat(s.radius)),
             MathShape::SphereSweep(s) => s.bounds(),
+            MathShape::HeightField(s) => s.bounds(),
+            MathShape::Text(s) => s.bounds(),
         }
     }
 }

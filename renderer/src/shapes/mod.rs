@@ -6,6 +6,7 @@ mod cone;
 mod cuboid;
 mod cylinder;
 mod disc;
+mod height_field;
 mod isosurface;
 mod julia;
 mod math_shape;
@@ -13,6 +14,7 @@ mod plane;
 mod poly;
 mod sphere;
 mod sphere_sweep;
+mod text;
 mod torus;
 mod triangle;
 

@@ -12,14 +12,11 @@ pub const SCENE_NAME: &str = "scene.pov";
 
 /// Renders the request's scene.
 pub fn run(request: &Request) -> Response {
-    let outcome = options(request).and_then(|options| {
-        let files = files(request)?;
-        Ok((options, files))
-    });
-    let (options, files) = match outcome {
-        Ok(prepared) => prepared,
+    let options = match options(request) {
+        Ok(options) => options,
         Err(text) => return Response::error(text),
     };
+    let files = files(request);
     match renderer::pipeline::render_source(SCENE_NAME, &files, &options) {
         Ok(rendered) => Response {
             outcome: Ok(pixels(&rendered.image)),
@@ -53,25 +50,18 @@ fn options(request: &Request) -> Result<RenderOptions, String> {
     Ok(options)
 }
 
-/// The scene and its includes as the evaluator reads them. Text data files (`#fopen`) join
-/// the includes; binary assets wait for image maps, height fields and fonts.
-fn files(request: &Request) -> Result<MemoryFiles, String> {
+/// The scene, its includes and its other files (images, fonts, `#fopen` data) as the
+/// evaluator reads them: files that are UTF-8 text can also be included or read as text.
+fn files(request: &Request) -> MemoryFiles {
     let mut files = MemoryFiles::new();
     files.insert(SCENE_NAME, request.scene.as_str());
     for (name, text) in &request.includes {
         files.insert(name.as_str(), text.as_str());
     }
     for (name, bytes) in &request.files {
-        match std::str::from_utf8(bytes) {
-            Ok(text) => files.insert(name.as_str(), text),
-            Err(_) => {
-                return Err(format!(
-                    "files: {name}: not supported yet: binary files (image maps, height fields, fonts)"
-                ));
-            }
-        };
+        files.insert_bytes(name.as_str(), bytes.as_slice());
     }
-    Ok(files)
+    files
 }
 
 /// The image as 8-bit samples, quantised as the PNG writer quantises them.
