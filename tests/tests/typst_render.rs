@@ -128,7 +128,7 @@ fn an_image_map_from_files_colours_the_render() {
     let doc = Document::new(&format!(
         "{IMPORT}#let r = try-render(read(\"scene.pov\"), width: 4, height: 2, antialias: false,
   files: (\"map.png\": read(\"map.png\", encoding: none), \"size.txt\": read(\"size.txt\")))
-#metadata((error: r.error, pixels: r.pixels)) <result>
+#metadata((error: r.error, pixels: array(r.pixels))) <result>
 "
     ))
     .with_file(
@@ -320,7 +320,14 @@ fn scene_errors_are_the_gcc_style_report() {
             1 | #include "a.inc"
               |          ^~~~~~~
         --- missing image
+        plugin errored with: scene.pov:1:41: error: cannot find image file 'missing.png'
+            1 | plane { -z, 0 pigment { image_map { png "missing.png" } } }
+              |                                         ^~~~~~~~~~~~~
+        note: files available: data.txt, map.png
         --- corrupt image
+        plugin errored with: scene.pov:1:41: error: cannot read 'map.png': not a valid PNG file: unexpected end of file
+            1 | plane { -z, 0 pigment { image_map { png "map.png" } } }
+              |                                         ^~~~~~~~~
         --- unknown extra option
         plugin errored with: extra: option `Frobnicate=on`: unknown option"#]]
     .assert_eq(&reports.join("\n"));

@@ -371,8 +371,8 @@ mod tests {
                 .starts_with("cannot read 'bad.png': not a valid PNG file")
         );
         assert_eq!(
-            error(&scene("gif \"map.png\""), files.clone()),
-            "not supported yet: gif images 39..48 []"
+            error(&scene("jpeg \"map.png\""), files.clone()),
+            "not supported yet: jpeg images 40..49 []"
         );
         assert_eq!(
             error(&scene("png \"map.png\" map_type 3"), files),

@@ -3,6 +3,7 @@
 //! 0..1 as the file stores them (no gamma applied), the palette index of each pixel for
 //! palette images, and the gamma the file states. Malformed files are errors, never panics.
 
+mod gif;
 mod netpbm;
 mod png;
 mod tga;
@@ -141,6 +142,7 @@ impl fmt::Display for ImageError {
 pub fn decode(format: ImageFormat, bytes: &[u8]) -> Result<Image, ImageError> {
     let image = match format {
         ImageFormat::Png => png::decode(bytes)?,
+        ImageFormat::Gif => gif::decode(bytes)?,
         ImageFormat::Tga => tga::decode(bytes)?,
         ImageFormat::Ppm | ImageFormat::Pgm => netpbm::decode(bytes)?,
         other => {
