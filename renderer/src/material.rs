@@ -218,9 +218,9 @@ fn layer_from_scene(texture: &scene::Texture) -> Result<Layer, String> {
 pub(crate) fn pigment_from_scene(pigment: &scene::Pigment) -> Result<Pigment, String> {
     match pigment {
         scene::Pigment::Solid(c) => Ok(Pigment::Solid(*c)),
-        scene::Pigment::Image { map, transform } => Ok(Pigment::Image {
+        scene::Pigment::Image(map) => Ok(Pigment::Image {
             map: Arc::new(ImageMap::clone(map)),
-            to_pattern: transform.inverse,
+            to_pattern: map.transform.inverse,
         }),
         scene::Pigment::Pattern { pattern, map } => {
             pattern::check(pattern)?;

@@ -6,6 +6,7 @@
 use super::tokens::Token;
 use super::{Evaluator, Result};
 use crate::image::{self, FileGamma, Image, ImageFormat};
+use crate::scene::Transform;
 use crate::scene::bitmap::{
     Bitmap, ImageMap, ImagePattern, ImageValue, Interpolation, MapType, PaletteAmounts,
 };
@@ -209,6 +210,7 @@ impl Evaluator<'_> {
             bitmap: new_bitmap(self.working_colours(&file)),
             filter: PaletteAmounts::default(),
             transmit: PaletteAmounts::default(),
+            transform: Transform::IDENTITY,
         };
         loop {
             let token = self.next()?;

@@ -122,7 +122,7 @@ impl Evaluator<'_> {
         let body = match first.kind {
             PATTERN_KW => match self.pigment_body()? {
                 Pigment::Pattern { pattern, .. } => Body::Pattern(pattern),
-                Pigment::Solid(_) | Pigment::Image { .. } => {
+                Pigment::Solid(_) | Pigment::Image(_) => {
                     return Err(
                         self.error_at(first, "expected a pattern in function { pattern { } }")
                     );

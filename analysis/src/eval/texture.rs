@@ -276,10 +276,7 @@ impl Evaluator<'_> {
                 self.unget(first);
                 Pigment::Solid(self.scene_colour()?)
             }
-            IMAGE_MAP_KW => Pigment::Image {
-                map: Box::new(self.image_map_body()?),
-                transform: Transform::IDENTITY,
-            },
+            IMAGE_MAP_KW => Pigment::Image(Box::new(self.image_map_body()?)),
             DENSITY_FILE_KW => {
                 return Err(self.unsupported(&first, self.text(&first)));
             }
@@ -329,7 +326,7 @@ impl Evaluator<'_> {
                         }
                     }
                 }
-            } else if matches!(pigment, Pigment::Image { .. })
+            } else if matches!(pigment, Pigment::Image(_))
                 && matches!(
                     token.kind,
                     TURBULENCE_KW | WARP_KW | OCTAVES_KW | OMEGA_KW | LAMBDA_KW
@@ -1273,7 +1270,7 @@ pub(super) fn transform_pigment(pigment: &mut Pigment, t: &Transform) {
                 transform_pigment(entry, t);
             }
         }
-        Pigment::Image { transform, .. } => *transform = transform.then(t),
+        Pigment::Image(map) => map.transform = map.transform.then(t),
         Pigment::Solid(_) => {}
     }
 }

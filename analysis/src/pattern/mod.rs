@@ -57,7 +57,7 @@ pub fn check(pattern: &Pattern) -> Result<(), String> {
 /// Whether every pattern of a pigment can be evaluated; `Err` names the first that cannot.
 pub fn check_pigment(pigment: &Pigment) -> Result<(), String> {
     match pigment {
-        Pigment::Solid(_) | Pigment::Image { .. } => Ok(()),
+        Pigment::Solid(_) | Pigment::Image(_) => Ok(()),
         Pigment::Pattern { pattern, map } => {
             check(pattern)?;
             map.entries.iter().try_for_each(|(_, p)| check_pigment(p))
@@ -99,8 +99,8 @@ pub fn blend_position(
 pub fn pigment_colour(pigment: &Pigment, world: DVec3) -> Colour {
     match pigment {
         Pigment::Solid(c) => *c,
-        Pigment::Image { map, transform } => {
-            bitmap::image_map_colour(map, transform.inverse.transform_point3(world))
+        Pigment::Image(map) => {
+            bitmap::image_map_colour(map, map.transform.inverse.transform_point3(world))
         }
         Pigment::Pattern { pattern, map } => {
             let entries = &map.entries;

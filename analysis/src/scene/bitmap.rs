@@ -2,6 +2,7 @@
 //! `image_pattern`, which share how a point finds its pixel (the bitmap modifiers
 //! `map_type`, `once` and `interpolate`).
 
+use super::Transform;
 use crate::image::Image;
 use std::sync::Arc;
 
@@ -72,6 +73,8 @@ pub struct ImageMap {
     pub bitmap: Bitmap,
     pub filter: PaletteAmounts,
     pub transmit: PaletteAmounts,
+    /// From the image's pattern space to the world.
+    pub transform: Transform,
 }
 
 /// What a bump map or image pattern reads from a pixel.

@@ -197,11 +197,8 @@ pub enum Pigment {
         pattern: Box<Pattern>,
         map: BlendMap<Pigment>,
     },
-    /// `image_map { }`, placed by the transform (pattern space to the world).
-    Image {
-        map: Box<super::bitmap::ImageMap>,
-        transform: Transform,
-    },
+    /// `image_map { }`.
+    Image(Box<super::bitmap::ImageMap>),
 }
 
 #[derive(Debug, Clone, PartialEq)]
