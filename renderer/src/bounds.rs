@@ -101,6 +101,11 @@ impl Aabb {
         }
     }
 
+    /// The parameter interval where the ray's whole line is inside the box.
+    pub fn line_span(&self, ray: &Ray) -> Option<(f64, f64)> {
+        self.clip(ray, ray.direction.recip(), f64::NEG_INFINITY, f64::INFINITY)
+    }
+
     /// The parameter interval where the ray is inside the box, clipped to `[tmin, tmax]`;
     /// `None` when it misses. `inv_dir` is the componentwise reciprocal of the direction.
     pub fn clip(&self, ray: &Ray, inv_dir: DVec3, tmin: f64, tmax: f64) -> Option<(f64, f64)> {

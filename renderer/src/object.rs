@@ -59,7 +59,7 @@ pub struct Leaf {
 pub struct Hit<'a> {
     pub t: f64,
     pub leaf: &'a Leaf,
-    pub part: u8,
+    pub part: u32,
 }
 
 impl Leaf {
@@ -125,7 +125,7 @@ impl Leaf {
     }
 
     /// The unit outward normal in the world at a point of this leaf's surface.
-    pub fn normal(&self, p: DVec3, part: u8) -> DVec3 {
+    pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
         let n = self.shape.normal(self.local_point(p), part);
         let n = if self.to_world.is_some() {
             self.normal_matrix * n

@@ -4,10 +4,18 @@
 use tests::fidelity::manifest;
 use tests::image_compare::{Picture, compare};
 
+/// `FIDELITY_ONLY=prefix,...` narrows the run to the scenes whose names start with one of
+/// the prefixes, for working on a few of them; unset, every scene is compared.
 #[test]
 fn renders_match_povray() {
+    let only: Vec<String> = std::env::var("FIDELITY_ONLY")
+        .map(|v| v.split(',').map(str::to_string).collect())
+        .unwrap_or_default();
     let mut failures = Vec::new();
     for scene in manifest() {
+        if !only.is_empty() && !only.iter().any(|p| scene.name.starts_with(p.as_str())) {
+            continue;
+        }
         let reference = Picture::read(&scene.reference_png()).unwrap();
         let ours = match scene.render_with(&scene.source()) {
             Ok(p) => p,

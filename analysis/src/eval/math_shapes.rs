@@ -64,6 +64,15 @@ impl Evaluator<'_> {
             BLOB_KW => self.blob(keyword),
             SUPERELLIPSOID_KW => {
                 let v = self.vector_of(2)?;
+                if !(v.c[0] > 0.0 && v.c[1] > 0.0 && v.c[0].is_finite() && v.c[1].is_finite()) {
+                    return Err(self.error_at(
+                        keyword,
+                        format!(
+                            "a superellipsoid's exponents must be positive, not <{}, {}>",
+                            v.c[0], v.c[1]
+                        ),
+                    ));
+                }
                 Ok(Shape::Superellipsoid {
                     e: v.c[0],
                     n: v.c[1],
@@ -551,7 +560,13 @@ impl Evaluator<'_> {
         if points.len() < 4 {
             return Err(self.error_at(keyword, "a sor needs at least 4 points"));
         }
-        if points.windows(2).any(|w| w[1].y <= w[0].y) {
+        // The first and last points only set the slopes at the ends (the manual's vase
+        // starts with two points at one height); the points on the curve must climb.
+        let n = points.len();
+        if points[1..n - 1].windows(2).any(|w| w[1].y <= w[0].y)
+            || points[2].y <= points[0].y
+            || points[n - 1].y <= points[n - 3].y
+        {
             return Err(self.error_at(keyword, "a sor's points must have increasing y coordinates"));
         }
         let (mut open, mut sturm) = (false, false);

@@ -12,9 +12,9 @@ pub struct Cone {
     pub open: bool,
 }
 
-const SIDE: u8 = 0;
-const BASE: u8 = 1;
-const CAP: u8 = 2;
+const SIDE: u32 = 0;
+const BASE: u32 = 1;
+const CAP: u32 = 2;
 
 impl Cone {
     fn radius_at(&self, z: f64) -> f64 {
@@ -56,7 +56,7 @@ impl Cone {
         p.z > 0.0 && p.z < 1.0 && p.x * p.x + p.y * p.y < r * r
     }
 
-    pub fn normal(&self, p: DVec3, part: u8) -> DVec3 {
+    pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
         match part {
             BASE => -DVec3::Z,
             CAP => DVec3::Z,

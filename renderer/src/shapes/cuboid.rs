@@ -35,7 +35,7 @@ impl Cuboid {
                 continue;
             }
             let (mut t1, mut t2) = ((lo - o) / d, (hi - o) / d);
-            let (mut p1, mut p2) = (2 * axis as u8, 2 * axis as u8 + 1);
+            let (mut p1, mut p2) = (2 * axis as u32, 2 * axis as u32 + 1);
             if t1 > t2 {
                 std::mem::swap(&mut t1, &mut t2);
                 std::mem::swap(&mut p1, &mut p2);
@@ -59,7 +59,7 @@ impl Cuboid {
         p.cmpgt(self.min).all() && p.cmplt(self.max).all()
     }
 
-    pub fn normal(&self, part: u8) -> DVec3 {
+    pub fn normal(&self, part: u32) -> DVec3 {
         let mut n = DVec3::ZERO;
         n[(part / 2) as usize] = if part.is_multiple_of(2) { -1.0 } else { 1.0 };
         n

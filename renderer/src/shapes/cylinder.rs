@@ -10,9 +10,9 @@ pub struct Cylinder {
     pub open: bool,
 }
 
-const SIDE: u8 = 0;
-const BASE: u8 = 1;
-const CAP: u8 = 2;
+const SIDE: u32 = 0;
+const BASE: u32 = 1;
+const CAP: u32 = 2;
 
 impl Cylinder {
     pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
@@ -45,7 +45,7 @@ impl Cylinder {
         p.x * p.x + p.y * p.y < 1.0 && p.z > 0.0 && p.z < 1.0
     }
 
-    pub fn normal(&self, p: DVec3, part: u8) -> DVec3 {
+    pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
         match part {
             BASE => -DVec3::Z,
             CAP => DVec3::Z,

@@ -233,15 +233,9 @@ impl HeightField {
     }
 
     pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
-        let mut count = 0;
         self.walk(ray, f64::NEG_INFINITY, f64::INFINITY, &mut |t| {
             roots.push(t, 0);
-            count += 1;
-            if count == Roots::CAPACITY {
-                ControlFlow::Break(())
-            } else {
-                ControlFlow::Continue(())
-            }
+            ControlFlow::Continue(())
         });
     }
 

@@ -16,8 +16,8 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 /// Parts of a hit: the surface itself, or a face of the container.
-const PART_SURFACE: u8 = 0;
-const PART_SPHERE: u8 = 7;
+const PART_SURFACE: u32 = 0;
+const PART_SPHERE: u32 = 7;
 
 /// The function, compiled when it is code.
 #[derive(Debug, Clone, PartialEq)]
@@ -162,7 +162,7 @@ impl Isosurface {
     }
 
     /// Where the ray enters and leaves the container, with the parts hit.
-    fn container_span(&self, ray: &Ray) -> Option<(f64, u8, f64, u8)> {
+    fn container_span(&self, ray: &Ray) -> Option<(f64, u32, f64, u32)> {
         match self.container {
             Container::Sphere { center, radius } => {
                 let o = ray.origin - center;
@@ -173,8 +173,8 @@ impl Isosurface {
                 Some((t1, PART_SPHERE, t2, PART_SPHERE))
             }
             Container::Box { corner1, corner2 } => {
-                let mut near = (f64::NEG_INFINITY, 0u8);
-                let mut far = (f64::INFINITY, 0u8);
+                let mut near = (f64::NEG_INFINITY, 0u32);
+                let mut far = (f64::INFINITY, 0u32);
                 for axis in 0..3 {
                     let (o, d) = (ray.origin[axis], ray.direction[axis]);
                     let (lo, hi) = (corner1[axis], corner2[axis]);
@@ -185,7 +185,7 @@ impl Isosurface {
                         continue;
                     }
                     let (mut ta, mut tb) = ((lo - o) / d, (hi - o) / d);
-                    let (mut pa, mut pb) = (1 + 2 * axis as u8, 2 + 2 * axis as u8);
+                    let (mut pa, mut pb) = (1 + 2 * axis as u32, 2 + 2 * axis as u32);
                     if ta > tb {
                         std::mem::swap(&mut ta, &mut tb);
                         std::mem::swap(&mut pa, &mut pb);
@@ -298,10 +298,10 @@ impl Isosurface {
 
     /// The outward normal: the container's at its faces, else the function's gradient by
     /// forward differences one accuracy long, as POV-Ray takes it.
-    pub fn normal(&self, p: DVec3, part: u8) -> DVec3 {
+    pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
         match part {
             1..=6 => {
-                let axis = usize::from((part - 1) / 2);
+                let axis = ((part - 1) / 2) as usize;
                 let mut n = DVec3::ZERO;
                 n[axis] = if part % 2 == 1 { -1.0 } else { 1.0 };
                 n

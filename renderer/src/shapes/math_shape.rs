@@ -3,13 +3,21 @@
 //! simple shapes they may take many steps to find a crossing, so they also answer "the
 //! nearest crossing in an interval" directly, which lets them stop early.
 
+use super::blob::{self, Blob};
 use super::height_field::HeightField;
 use super::isosurface::{FieldFunction, GradientRecord, Isosurface};
 use super::julia::{self, Julia};
+use super::lathe::Lathe;
+use super::lemon::Lemon;
+use super::ovus::Ovus;
+use super::parametric::{Parametric, ParametricSpec};
 use super::poly::Poly;
+use super::prism::Prism;
+use super::sor::Sor;
 use super::sphere_sweep::SphereSweep;
+use super::superellipsoid::Superellipsoid;
 use super::text::Text;
-use super::{Root, Roots};
+use super::{OrderedCrossings, Root, Roots};
 use crate::bounds::Aabb;
 use crate::ray::Ray;
 use analysis::scene::{self, Origin};
@@ -24,6 +32,14 @@ pub enum MathShape {
     SphereSweep(SphereSweep),
     HeightField(HeightField),
     Text(Text),
+    Superellipsoid(Superellipsoid),
+    Ovus(Ovus),
+    Lemon(Lemon),
+    Lathe(Lathe),
+    Sor(Sor),
+    Prism(Prism),
+    Blob(Blob),
+    Parametric(Parametric),
 }
 
 /// Something a shape found out while rendering that the scene's author should hear, as
@@ -106,6 +122,70 @@ pub fn build(
             Ok(HeightField::new(field).map(|f| (MathShape::HeightField(f), identity)))
         }
         scene::Shape::Text(text) => Ok(Text::new(text).map(|t| (MathShape::Text(t), identity))),
+        scene::Shape::Superellipsoid { e, n } => Ok(Some((
+            MathShape::Superellipsoid(Superellipsoid::new(*e, *n)),
+            identity,
+        ))),
+        scene::Shape::Ovus {
+            bottom_radius,
+            top_radius,
+        } => Ok(Some((
+            MathShape::Ovus(Ovus::new(*bottom_radius, *top_radius)),
+            identity,
+        ))),
+        scene::Shape::Lemon(l) => {
+            let axis = l.cap - l.base;
+            let length = axis.length();
+            if !(length > 0.0 && length.is_finite()) {
+                return Err("degenerate lemon: base and cap coincide".into());
+            }
+            let w = axis / length;
+            let (u, v) = w.any_orthonormal_pair();
+            // The canonical lemon stands on the y axis from 0 to its length.
+            let frame = DAffine3::from_mat3_translation(glam::DMat3::from_cols(u, w, v), l.base);
+            let lemon = Lemon::new(length, l.base_radius, l.cap_radius, l.inner_radius, l.open)?;
+            Ok(Some((MathShape::Lemon(lemon), frame)))
+        }
+        scene::Shape::Lathe(l) => {
+            Ok(Lathe::new(l.kind, &l.points, l.sturm)
+                .map(|lathe| (MathShape::Lathe(lathe), identity)))
+        }
+        scene::Shape::Sor(s) => {
+            Ok(Sor::new(&s.points, s.open, s.sturm).map(|sor| (MathShape::Sor(sor), identity)))
+        }
+        scene::Shape::Prism(p) => Ok(Prism::new(
+            p.kind,
+            p.sweep,
+            (p.height1, p.height2),
+            &p.points,
+            p.open,
+            p.sturm,
+        )
+        .map(|prism| (MathShape::Prism(prism), identity))),
+        scene::Shape::Blob(b) => {
+            if b.components.iter().any(|c| c.texture.is_some()) {
+                return Err("not supported yet: textures on blob components".into());
+            }
+            let components = b
+                .components
+                .iter()
+                .map(|c| blob::Component::new(c.kind, c.radius, c.strength, c.transform.matrix))
+                .collect();
+            Ok(Blob::new(components, b.threshold, b.sturm)
+                .map(|blob| (MathShape::Blob(blob), identity)))
+        }
+        scene::Shape::Parametric(p) => Ok(Some((
+            MathShape::Parametric(Parametric::new(ParametricSpec {
+                functions: p.functions.clone().map(|f| FieldFunction::new(&f)),
+                u: p.u_range,
+                v: p.v_range,
+                container: p.container,
+                accuracy: p.accuracy,
+                max_gradient: p.max_gradient,
+                precompute: p.precompute,
+            })),
+            identity,
+        ))),
         other => Err(format!("not supported yet: {}", shape_name(other))),
     };
     built
@@ -114,14 +194,8 @@ pub fn build(
 /// The keyword of a shape, for messages.
 fn shape_name(shape: &scene::Shape) -> &'static str {
     match shape {
-        scene::Shape::Parametric(_) => "parametric",
-        scene::Shape::Lathe(_) => "lathe",
-        scene::Shape::Sor(_) => "sor",
-        scene::Shape::Prism(_) => "prism",
-        scene::Shape::Blob(_) => "blob",
-        scene::Shape::Superellipsoid { .. } => "superellipsoid",
-        scene::Shape::Ovus { .. } => "ovus",
-        scene::Shape::Lemon(_) => "lemon",
+        scene::Shape::HeightField(_) => "height_field",
+        scene::Shape::Text(_) => "text",
         _ => "this shape",
     }
 }
@@ -161,7 +235,7 @@ impl MathShape {
             MathShape::Poly(s) => s.intersect(ray, roots),
             MathShape::Isosurface(s) => s.intersect(ray, roots),
             MathShape::Julia(s) => {
-                let mut t = [0.0; Roots::CAPACITY];
+                let mut t = [0.0; 4];
                 let n = s.crossings(ray, f64::NEG_INFINITY, f64::INFINITY, false, &mut t);
                 for &t in &t[..n] {
                     roots.push(t, 0);
@@ -170,6 +244,14 @@ impl MathShape {
             MathShape::SphereSweep(s) => s.intersect(ray, roots),
             MathShape::HeightField(s) => s.intersect(ray, roots),
             MathShape::Text(s) => s.intersect(ray, roots),
+            MathShape::Superellipsoid(s) => s.intersect(ray, roots),
+            MathShape::Ovus(s) => s.intersect(ray, roots),
+            MathShape::Lemon(s) => s.intersect(ray, roots),
+            MathShape::Lathe(s) => s.intersect(ray, roots),
+            MathShape::Sor(s) => s.intersect(ray, roots),
+            MathShape::Prism(s) => s.intersect(ray, roots),
+            MathShape::Blob(s) => s.intersect(ray, roots),
+            MathShape::Parametric(s) => s.intersect(ray, roots),
         }
     }
 
@@ -177,9 +259,20 @@ impl MathShape {
     pub fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<Root> {
         let t = match self {
             MathShape::Poly(s) => s.first_hit(ray, tmin, tmax),
-            MathShape::Isosurface(s) => {
+            MathShape::Julia(s) => return julia::first_root(s, ray, tmin, tmax),
+            MathShape::SphereSweep(s) => s.first_hit(ray, tmin, tmax),
+            MathShape::Superellipsoid(s) => s.first_hit(ray, tmin, tmax),
+            MathShape::Blob(s) => s.first_hit(ray, tmin, tmax),
+            MathShape::Parametric(s) => {
+                return s
+                    .first_hit(ray, tmin, tmax)
+                    .map(|(t, part)| Root { t, part });
+            }
+            MathShape::HeightField(s) => return s.first_hit(ray, tmin, tmax),
+            MathShape::Text(s) => return s.first_hit(ray, tmin, tmax),
+            _ => {
                 let mut roots = Roots::new();
-                s.intersect(ray, &mut roots);
+                self.intersect(ray, &mut roots);
                 return roots
                     .as_slice()
                     .iter()
@@ -187,10 +280,6 @@ impl MathShape {
                     .filter(|r| r.t > tmin && r.t < tmax)
                     .min_by(|a, b| a.t.total_cmp(&b.t));
             }
-            MathShape::Julia(s) => return julia::first_root(s, ray, tmin, tmax),
-            MathShape::SphereSweep(s) => s.first_hit(ray, tmin, tmax),
-            MathShape::HeightField(s) => return s.first_hit(ray, tmin, tmax),
-            MathShape::Text(s) => return s.first_hit(ray, tmin, tmax),
         };
         t.map(|t| Root { t, part: 0 })
     }
@@ -203,10 +292,18 @@ impl MathShape {
             MathShape::SphereSweep(s) => s.inside(p),
             MathShape::HeightField(s) => s.inside(p),
             MathShape::Text(s) => s.inside(p),
+            MathShape::Superellipsoid(s) => s.inside(p),
+            MathShape::Ovus(s) => s.inside(p),
+            MathShape::Lemon(s) => s.inside(p),
+            MathShape::Lathe(s) => s.inside(p),
+            MathShape::Sor(s) => s.inside(p),
+            MathShape::Prism(s) => s.inside(p),
+            MathShape::Blob(s) => s.inside(p),
+            MathShape::Parametric(s) => s.inside(p),
         }
     }
 
-    pub fn normal(&self, p: DVec3, part: u8) -> DVec3 {
+    pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
         match self {
             MathShape::Poly(s) => s.normal(p),
             MathShape::Isosurface(s) => s.normal(p, part),
@@ -214,6 +311,14 @@ impl MathShape {
             MathShape::SphereSweep(s) => s.normal(p),
             MathShape::HeightField(s) => s.normal(p),
             MathShape::Text(s) => s.normal(p, part),
+            MathShape::Superellipsoid(s) => s.normal(p),
+            MathShape::Ovus(s) => s.normal(p, part),
+            MathShape::Lemon(s) => s.normal(p, part),
+            MathShape::Lathe(s) => s.normal(p, part),
+            MathShape::Sor(s) => s.normal(p, part),
+            MathShape::Prism(s) => s.normal(p, part),
+            MathShape::Blob(s) => s.normal(p),
+            MathShape::Parametric(s) => s.normal(p, part),
         }
     }
 
@@ -228,6 +333,14 @@ impl MathShape {
             MathShape::SphereSweep(s) => s.bounds(),
             MathShape::HeightField(s) => s.bounds(),
             MathShape::Text(s) => s.bounds(),
+            MathShape::Superellipsoid(_) => Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0)),
+            MathShape::Ovus(s) => s.bounds(),
+            MathShape::Lemon(s) => s.bounds(),
+            MathShape::Lathe(s) => s.bounds(),
+            MathShape::Sor(s) => s.bounds(),
+            MathShape::Prism(s) => s.bounds(),
+            MathShape::Blob(s) => s.bounds(),
+            MathShape::Parametric(s) => s.bounds(),
         }
     }
 }

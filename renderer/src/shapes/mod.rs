@@ -2,6 +2,7 @@
 //! surface, whether a point is inside, and its normal; nothing of textures or of where it
 //! sits in the world (an object's transform places it, pbrt's split).
 
+mod blob;
 mod cone;
 mod cuboid;
 mod cylinder;
@@ -9,11 +10,19 @@ mod disc;
 mod height_field;
 mod isosurface;
 mod julia;
+mod lathe;
+mod lemon;
 mod math_shape;
+mod ovus;
+mod parametric;
 mod plane;
+mod plane_curve;
 mod poly;
+mod prism;
+mod sor;
 mod sphere;
 mod sphere_sweep;
+mod superellipsoid;
 mod text;
 mod torus;
 mod triangle;
@@ -37,45 +46,89 @@ use glam::DVec3;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Root {
     pub t: f64,
-    pub part: u8,
+    pub part: u32,
 }
 
-/// The crossings of one ray with one shape, kept on the stack. Every shape so far crosses
-/// a ray at most four times (a torus); the array stays small because it is built for every
-/// ray and shape.
+/// The crossings of one ray with one shape. The first few are kept on the stack, since
+/// the array is built for every ray and shape and most shapes cross a ray at most four
+/// times (a torus); shapes that may cross it more often (a lathe, a prism, a blob) spill
+/// the rest onto the heap, so that CSG sees every crossing.
 #[derive(Debug, Clone)]
 pub struct Roots {
-    roots: [Root; Roots::CAPACITY],
+    roots: [Root; Roots::INLINE],
     len: usize,
+    spilled: Vec<Root>,
 }
 
 impl Roots {
-    pub const CAPACITY: usize = 4;
+    const INLINE: usize = 4;
 
     pub fn new() -> Roots {
         Roots {
-            roots: [Root { t: 0.0, part: 0 }; Roots::CAPACITY],
+            roots: [Root { t: 0.0, part: 0 }; Roots::INLINE],
             len: 0,
+            spilled: Vec::new(),
         }
     }
 
     /// Records a crossing; NaN parameters (degenerate rays) are dropped here so that no
     /// caller has to think of them.
-    pub fn push(&mut self, t: f64, part: u8) {
-        if t.is_finite() && self.len < Roots::CAPACITY {
-            self.roots[self.len] = Root { t, part };
+    pub fn push(&mut self, t: f64, part: u32) {
+        if !t.is_finite() {
+            return;
+        }
+        let root = Root { t, part };
+        if self.len < Roots::INLINE {
+            self.roots[self.len] = root;
             self.len += 1;
+        } else {
+            if self.spilled.is_empty() {
+                self.spilled.extend_from_slice(&self.roots);
+            }
+            self.spilled.push(root);
         }
     }
 
     pub fn as_slice(&self) -> &[Root] {
-        &self.roots[..self.len]
+        if self.spilled.is_empty() {
+            &self.roots[..self.len]
+        } else {
+            &self.spilled
+        }
     }
 }
 
 impl Default for Roots {
     fn default() -> Self {
         Roots::new()
+    }
+}
+
+/// A shape that finds its crossings nearest first and can stop at any of them (a blob, a
+/// superellipsoid): every crossing for CSG, or the nearest in an interval for the rest.
+pub(crate) trait OrderedCrossings {
+    /// Hands the crossings in `(tmin, tmax)` to `take`, nearest first, until it returns
+    /// true.
+    fn crossings(&self, ray: &Ray, tmin: f64, tmax: f64, take: &mut dyn FnMut(f64) -> bool);
+
+    fn intersect(&self, ray: &Ray, roots: &mut Roots) {
+        self.crossings(ray, f64::NEG_INFINITY, f64::INFINITY, &mut |t| {
+            roots.push(t, 0);
+            false
+        });
+    }
+
+    fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<f64> {
+        let mut found = None;
+        self.crossings(ray, tmin, tmax, &mut |t| {
+            if t > tmin && t < tmax {
+                found = Some(t);
+                true
+            } else {
+                false
+            }
+        });
+        found
     }
 }
 
@@ -141,7 +194,7 @@ impl Shape {
     }
 
     /// The outward normal at a surface point, not necessarily of unit length.
-    pub fn normal(&self, p: DVec3, part: u8) -> DVec3 {
+    pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
         match self {
             Shape::Sphere(_) => p,
             Shape::Cuboid(s) => s.normal(part),

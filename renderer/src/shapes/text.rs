@@ -13,9 +13,9 @@ use analysis::scene::math_shapes::{self, OutlineSegment};
 use glam::{DVec2, DVec3};
 
 /// Parts of the surface, for the normal.
-const FRONT: u8 = 0;
-const BACK: u8 = 1;
-const SIDE: u8 = 2;
+const FRONT: u32 = 0;
+const BACK: u32 = 1;
+const SIDE: u32 = 2;
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Text {
@@ -221,7 +221,7 @@ impl Text {
         let mut found = Vec::new();
         self.crossings(ray, f64::NEG_INFINITY, f64::INFINITY, &mut found);
         found.sort_by(|a, b| a.t.total_cmp(&b.t));
-        for root in found.into_iter().take(Roots::CAPACITY) {
+        for root in found {
             roots.push(root.t, root.part);
         }
     }
@@ -239,7 +239,7 @@ impl Text {
 
     /// The outward normal: ∓z on the faces; on the walls, across the outline curve that
     /// passes closest to the point.
-    pub fn normal(&self, p: DVec3, part: u8) -> DVec3 {
+    pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
         match part {
             FRONT => return DVec3::new(0.0, 0.0, -self.thickness.signum()),
             BACK => return DVec3::new(0.0, 0.0, self.thickness.signum()),

@@ -46,27 +46,24 @@ impl Torus {
         let apex = if e > 0.0 { -f / e } else { t0 };
         let nearest = rho2(apex.clamp(t0, t1));
         let farthest = rho2(t0).max(rho2(t1));
-        if nearest > bound * bound || farthest < (big - small) * (big - small) {
+        // The hole around the axis exists only when the tube is thinner than the ring; a
+        // spindle torus (minor above major) reaches the axis.
+        let hole = if big > small { big - small } else { 0.0 };
+        if nearest > bound * bound || farthest < hole * hole {
             return;
         }
-        let o = ray.origin + ray.direction * t0;
-        let (r2, k2) = (big * big, small * small);
-        let qa = a;
-        let qb = 2.0 * o.dot(d);
-        let qc = o.length_squared() + r2 - k2;
-        let e = d.x * d.x + d.z * d.z;
-        let f = 2.0 * (o.x * d.x + o.z * d.z);
-        let g = o.x * o.x + o.z * o.z;
-        let coeffs = [
-            qc * qc - 4.0 * r2 * g,
-            2.0 * qb * qc - 4.0 * r2 * f,
-            qb * qb + 2.0 * qa * qc - 4.0 * r2 * e,
-            2.0 * qa * qb,
-            qa * qa,
-        ];
-        let (found, n) = polynomial::quartic_roots_in(&coeffs, 0.0, t1 - t0);
-        for &t in &found[..n] {
-            roots.push(t0 + t, 0);
+        // In units of the span, so that the solver weighs the coefficients alike at any
+        // scale of the scene.
+        let span = t1 - t0;
+        let mut coeffs = quartic_along(ray.origin + ray.direction * t0, d, big, small);
+        let mut power = 1.0;
+        for c in &mut coeffs {
+            *c *= power;
+            power *= span;
+        }
+        let (found, n) = polynomial::quartic_roots_in(&coeffs, 0.0, 1.0);
+        for &x in &found[..n] {
+            roots.push(t0 + x * span, 0);
         }
     }
 
@@ -79,4 +76,24 @@ impl Torus {
         let radial = DVec3::new(p.x, 0.0, p.z).normalize_or_zero();
         p - radial * self.major
     }
+}
+
+/// The torus equation (|p|² + R² - r²)² = 4 R² (x² + z²) along o + s d, as a quartic in s
+/// (lowest degree first). It holds on both the outer and the inner branch of a spindle
+/// torus (r > R); the lemon keeps the inner one.
+pub(crate) fn quartic_along(o: DVec3, d: DVec3, major: f64, minor: f64) -> [f64; 5] {
+    let (r2, k2) = (major * major, minor * minor);
+    let qa = d.length_squared();
+    let qb = 2.0 * o.dot(d);
+    let qc = o.length_squared() + r2 - k2;
+    let e = d.x * d.x + d.z * d.z;
+    let f = 2.0 * (o.x * d.x + o.z * d.z);
+    let g = o.x * o.x + o.z * o.z;
+    [
+        qc * qc - 4.0 * r2 * g,
+        2.0 * qb * qc - 4.0 * r2 * f,
+        qb * qb + 2.0 * qa * qc - 4.0 * r2 * e,
+        2.0 * qa * qb,
+        qa * qa,
+    ]
 }

@@ -1,0 +1,414 @@
+//! `prism { [spline] [sweep] h1, h2, N, <x, z>... [open] }`: closed outlines in the x-z
+//! plane swept along y between the two heights, inside where an odd number of outlines
+//! surround a point. A linear sweep keeps the outline; a conic sweep scales it with the
+//! height, from a point at the origin to the outline itself at y = 1.
+//!
+//! A ray meets a linearly swept segment c(s) where the segment crosses the ray's shadow
+//! on the x-z plane: cross(c(s) - o, d) = 0, a polynomial of the segment's degree. A
+//! conically swept one is met where the line from the origin through (x(s), 1, z(s))
+//! lies in the plane through the origin and the ray: (o × d) · (x(s), 1, z(s)) = 0,
+//! again of the segment's degree.
+
+use super::Roots;
+use super::plane_curve::{self, CurveSegment};
+use crate::bounds::Aabb;
+use crate::ray::Ray;
+use analysis::scene::math_shapes::{PrismSweep, SplineKind};
+use glam::{DVec2, DVec3};
+
+const BASE: u32 = u32::MAX - 1;
+const CAP: u32 = u32::MAX;
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Prism {
+    segments: Vec<CurveSegment>,
+    /// Each segment's box in the x-z plane, for culling.
+    boxes: Vec<(DVec2, DVec2)>,
+    sweep: PrismSweep,
+    y0: f64,
+    y1: f64,
+    open: bool,
+    sturm: bool,
+    /// The outlines' box in the x-z plane at y = 1.
+    outline: (DVec2, DVec2),
+}
+
+/// The segments of a prism's points: sub-outlines, each closed where its first point
+/// comes back, as the manual describes for each spline kind. The last linear outline is
+/// closed if the points leave it open.
+pub fn prism_segments(kind: SplineKind, p: &[DVec2]) -> Vec<CurveSegment> {
+    let n = p.len();
+    let mut out = Vec::new();
+    match kind {
+        SplineKind::Linear => {
+            let mut i = 0;
+            while i < n {
+                let first = p[i];
+                let mut j = i + 1;
+                while j < n && p[j] != first {
+                    out.push(CurveSegment::linear(p[j - 1], p[j]));
+                    j += 1;
+                }
+                if j < n {
+                    out.push(CurveSegment::linear(p[j - 1], p[j]));
+                    i = j + 1;
+                } else {
+                    if j - 1 > i {
+                        out.push(CurveSegment::linear(p[j - 1], first));
+                    }
+                    i = n;
+                }
+            }
+        }
+        SplineKind::Quadratic => {
+            let mut i = 0;
+            while i + 2 < n {
+                let first = p[i + 1];
+                let mut j = i + 2;
+                loop {
+                    out.push(CurveSegment::quadratic(p[j - 2], p[j - 1], p[j]));
+                    if p[j] == first || j + 1 >= n {
+                        break;
+                    }
+                    j += 1;
+                }
+                i = j + 1;
+            }
+        }
+        SplineKind::Cubic | SplineKind::BSpline => {
+            let mut i = 0;
+            while i + 3 < n {
+                let first = p[i + 1];
+                let mut j = i + 2;
+                while j + 1 < n {
+                    out.push(CurveSegment::cubic(p[j - 2], p[j - 1], p[j], p[j + 1]));
+                    if p[j] == first {
+                        break;
+                    }
+                    j += 1;
+                }
+                i = j + 2;
+            }
+        }
+        SplineKind::Bezier => {
+            for w in p.chunks_exact(4) {
+                out.push(CurveSegment::bezier(w[0], w[1], w[2], w[3]));
+            }
+        }
+    }
+    out
+}
+
+impl Prism {
+    pub fn new(
+        kind: SplineKind,
+        sweep: PrismSweep,
+        heights: (f64, f64),
+        points: &[DVec2],
+        open: bool,
+        sturm: bool,
+    ) -> Option<Prism> {
+        let segments = prism_segments(kind, points);
+        if segments.is_empty() || heights.0 == heights.1 {
+            return None;
+        }
+        let boxes: Vec<(DVec2, DVec2)> = segments.iter().map(CurveSegment::bounds).collect();
+        let outline = boxes.iter().fold(
+            (DVec2::INFINITY, DVec2::NEG_INFINITY),
+            |(lo, hi), (a, b)| (lo.min(*a), hi.max(*b)),
+        );
+        Some(Prism {
+            segments,
+            boxes,
+            sweep,
+            y0: heights.0.min(heights.1),
+            y1: heights.0.max(heights.1),
+            open,
+            sturm,
+            outline,
+        })
+    }
+
+    pub fn bounds(&self) -> Aabb {
+        let (lo, hi) = self.outline;
+        let (lo, hi) = match self.sweep {
+            PrismSweep::Linear => (lo, hi),
+            PrismSweep::Conic => {
+                let corners = [lo * self.y0, hi * self.y0, lo * self.y1, hi * self.y1];
+                (
+                    corners.iter().fold(DVec2::INFINITY, |m, c| m.min(*c)),
+                    corners.iter().fold(DVec2::NEG_INFINITY, |m, c| m.max(*c)),
+                )
+            }
+        };
+        Aabb::new(
+            DVec3::new(lo.x, self.y0, lo.y),
+            DVec3::new(hi.x, self.y1, hi.y),
+        )
+    }
+
+    /// Where the outline's point for `p` lies: p's x and z, unscaled by a conic sweep.
+    fn outline_point(&self, p: DVec3) -> Option<DVec2> {
+        match self.sweep {
+            PrismSweep::Linear => Some(DVec2::new(p.x, p.z)),
+            PrismSweep::Conic => (p.y != 0.0).then(|| DVec2::new(p.x / p.y, p.z / p.y)),
+        }
+    }
+
+    pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
+        let d = ray.direction;
+        let Some((t_in, t_out)) = self.bounds().line_span(ray) else {
+            return;
+        };
+        let mut params = Vec::new();
+        let slack = 1e-9 * (self.y1 - self.y0);
+        // A linear sweep is written from where the ray enters the box, with numbers of the
+        // prism's size; a conic one needs the apex at the origin.
+        let o = match self.sweep {
+            PrismSweep::Linear => ray.at(t_in),
+            PrismSweep::Conic => ray.origin,
+        };
+        let (o2, d2) = (DVec2::new(o.x, o.z), DVec2::new(d.x, d.z));
+        let e = d2.length_squared();
+        let shadow = (
+            o2.min(o2 + d2 * (t_out - t_in)),
+            o2.max(o2 + d2 * (t_out - t_in)),
+        );
+        let n = o.cross(d);
+        for (index, segment) in self.segments.iter().enumerate() {
+            let equation = match self.sweep {
+                PrismSweep::Linear => {
+                    let (lo, hi) = self.boxes[index];
+                    // Straight up or down the walls are edge-on; elsewhere the segment's box
+                    // must meet the ray's shadow on the x-z plane.
+                    if e == 0.0 || lo.cmpgt(shadow.1).any() || hi.cmplt(shadow.0).any() {
+                        continue;
+                    }
+                    combine(segment, d2.y, -d2.x, o2.y * d2.x - o2.x * d2.y)
+                }
+                PrismSweep::Conic => combine(segment, n.x, n.z, n.y),
+            };
+            params.clear();
+            plane_curve::solve(
+                &equation[..=segment.degree],
+                0.0,
+                1.0,
+                self.sturm,
+                &mut params,
+            );
+            for &s in &params {
+                let c = segment.at(s);
+                let t = match self.sweep {
+                    PrismSweep::Linear => (c - o2).dot(d2) / e + t_in,
+                    PrismSweep::Conic => {
+                        let v = DVec3::new(c.x, 1.0, c.y);
+                        let dv = d.cross(v);
+                        -ray.origin.cross(v).dot(dv) / dv.length_squared()
+                    }
+                };
+                let y = ray.origin.y + t * d.y;
+                if t.is_finite() && y >= self.y0 - slack && y <= self.y1 + slack {
+                    roots.push(t, index as u32);
+                }
+            }
+        }
+        if self.open || d.y == 0.0 {
+            return;
+        }
+        let mut scratch = Vec::new();
+        for (y, part) in [(self.y0, BASE), (self.y1, CAP)] {
+            let t = (y - ray.origin.y) / d.y;
+            let mut p = ray.at(t);
+            p.y = y;
+            if let Some(q) = self.outline_point(p)
+                && plane_curve::encloses(&self.segments, q, &mut scratch)
+            {
+                roots.push(t, part);
+            }
+        }
+    }
+
+    pub fn inside(&self, p: DVec3) -> bool {
+        if !(p.y > self.y0 && p.y < self.y1) {
+            return false;
+        }
+        let Some(q) = self.outline_point(p) else {
+            return false;
+        };
+        let (lo, hi) = self.outline;
+        q.cmpge(lo).all()
+            && q.cmple(hi).all()
+            && plane_curve::encloses(&self.segments, q, &mut Vec::new())
+    }
+
+    pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
+        match part {
+            BASE => return -DVec3::Y,
+            CAP => return DVec3::Y,
+            _ => {}
+        }
+        let (Some(segment), Some(q)) = (self.segments.get(part as usize), self.outline_point(p))
+        else {
+            return DVec3::Y;
+        };
+        let s = segment.nearest(q);
+        let t = segment.tangent(s);
+        match self.sweep {
+            PrismSweep::Linear => DVec3::new(t.y, 0.0, -t.x),
+            PrismSweep::Conic => {
+                let c = segment.at(s);
+                DVec3::new(-t.y, t.y * c.x - t.x * c.y, t.x)
+            }
+        }
+    }
+}
+
+/// a x(s) + b z(s) + c, lowest degree first.
+fn combine(segment: &CurveSegment, a: f64, b: f64, c: f64) -> [f64; 4] {
+    let mut out = [0.0; 4];
+    for (k, v) in segment.a.iter().enumerate() {
+        out[k] = a * v.x + b * v.y;
+    }
+    out[0] += c;
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pts(list: &[(f64, f64)]) -> Vec<DVec2> {
+        list.iter().map(|&(x, z)| DVec2::new(x, z)).collect()
+    }
+
+    fn crossings(prism: &Prism, ray: &Ray) -> Vec<(f64, u32)> {
+        let mut roots = Roots::new();
+        prism.intersect(ray, &mut roots);
+        let mut v: Vec<(f64, u32)> = roots.as_slice().iter().map(|r| (r.t, r.part)).collect();
+        v.sort_by(|a, b| a.0.total_cmp(&b.0));
+        v
+    }
+
+    #[test]
+    fn the_manual_frame_has_a_hole() {
+        // Two nested rectangles: the frame of the manual's example.
+        let p = pts(&[
+            (0.0, 0.0),
+            (6.0, 0.0),
+            (6.0, 8.0),
+            (0.0, 8.0),
+            (0.0, 0.0),
+            (1.0, 1.0),
+            (5.0, 1.0),
+            (5.0, 7.0),
+            (1.0, 7.0),
+            (1.0, 1.0),
+        ]);
+        let prism = Prism::new(
+            SplineKind::Linear,
+            PrismSweep::Linear,
+            (0.0, 1.0),
+            &p,
+            false,
+            false,
+        )
+        .unwrap();
+        assert_eq!(prism.segments.len(), 8);
+        assert!(prism.inside(DVec3::new(0.5, 0.5, 4.0)));
+        assert!(!prism.inside(DVec3::new(3.0, 0.5, 4.0)));
+        let ray = Ray::new(DVec3::new(-1.0, 0.5, 4.0), DVec3::X);
+        let ts: Vec<f64> = crossings(&prism, &ray).iter().map(|c| c.0).collect();
+        assert_eq!(ts, vec![1.0, 2.0, 6.0, 7.0]);
+        // From above, through the rim: the two caps.
+        let down = Ray::new(DVec3::new(0.5, 3.0, 4.0), -DVec3::Y);
+        let hits = crossings(&prism, &down);
+        assert_eq!(
+            hits.iter().map(|c| c.1).collect::<Vec<_>>(),
+            vec![CAP, BASE]
+        );
+        // Through the hole: nothing.
+        assert!(crossings(&prism, &Ray::new(DVec3::new(3.0, 3.0, 4.0), -DVec3::Y)).is_empty());
+    }
+
+    #[test]
+    fn the_last_linear_outline_closes_itself() {
+        let p = pts(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]);
+        let segments = prism_segments(SplineKind::Linear, &p);
+        assert_eq!(segments.len(), 4);
+        assert!((segments[3].at(1.0) - p[0]).length() < 1e-15);
+    }
+
+    #[test]
+    fn manual_spline_outlines_split_into_their_segments() {
+        let quadratic = pts(&[
+            (1.0, -1.0),
+            (0.0, 0.0),
+            (6.0, 0.0),
+            (6.0, 8.0),
+            (0.0, 8.0),
+            (0.0, 0.0),
+            (2.0, 0.0),
+            (1.0, 1.0),
+            (5.0, 1.0),
+            (5.0, 7.0),
+            (1.0, 7.0),
+            (1.0, 1.0),
+        ]);
+        assert_eq!(prism_segments(SplineKind::Quadratic, &quadratic).len(), 8);
+        let cubic = pts(&[
+            (1.0, -1.0),
+            (0.0, 0.0),
+            (6.0, 0.0),
+            (6.0, 8.0),
+            (0.0, 8.0),
+            (0.0, 0.0),
+            (-1.0, 1.0),
+            (2.0, 0.0),
+            (1.0, 1.0),
+            (5.0, 1.0),
+            (5.0, 7.0),
+            (1.0, 7.0),
+            (1.0, 1.0),
+            (0.0, 2.0),
+        ]);
+        let segments = prism_segments(SplineKind::Cubic, &cubic);
+        assert_eq!(segments.len(), 8);
+        assert!((segments[3].at(1.0) - DVec2::ZERO).length() < 1e-15);
+        assert!((segments[4].at(0.0) - DVec2::new(1.0, 1.0)).length() < 1e-15);
+    }
+
+    #[test]
+    fn a_conic_square_is_a_pyramid() {
+        let p = pts(&[
+            (-1.0, -1.0),
+            (1.0, -1.0),
+            (1.0, 1.0),
+            (-1.0, 1.0),
+            (-1.0, -1.0),
+        ]);
+        let prism = Prism::new(
+            SplineKind::Linear,
+            PrismSweep::Conic,
+            (0.0, 1.0),
+            &p,
+            false,
+            false,
+        )
+        .unwrap();
+        // At height 0.5 the square is half as wide.
+        let ray = Ray::new(DVec3::new(-2.0, 0.5, 0.0), DVec3::X);
+        let ts: Vec<f64> = crossings(&prism, &ray).iter().map(|c| c.0).collect();
+        assert_eq!(ts.len(), 2, "{ts:?}");
+        assert!((ts[0] - 1.5).abs() < 1e-12 && (ts[1] - 2.5).abs() < 1e-12);
+        let n = prism
+            .normal(ray.at(ts[1]), crossings(&prism, &ray)[1].1)
+            .normalize();
+        let expected = DVec3::new(1.0, -1.0, 0.0).normalize();
+        assert!(
+            (n - expected).length() < 1e-9 || (n + expected).length() < 1e-9,
+            "{n}"
+        );
+        assert!(prism.inside(DVec3::new(0.2, 0.5, 0.2)));
+        assert!(!prism.inside(DVec3::new(0.7, 0.5, 0.0)));
+    }
+}

@@ -1,0 +1,309 @@
+//! `superellipsoid { <e, n> }`: the points where (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n)
+//! equals 1, inside the box from -1 to 1. The left side raised to n/2 is a nested p-norm,
+//! h = ‖(‖(x, y)‖_{2/e}, z)‖_{2/n}, which grows linearly with distance from the origin and
+//! so is well scaled for root finding: the surface is h = 1. With both exponents at most
+//! 2 the norms are convex and h along a ray has one minimum, bracketed by a golden-section
+//! search that stops as soon as it finds a point inside; with either above 2 the shape is
+//! pinched, and the ray is first cut where it crosses the coordinate planes and the
+//! diagonal planes x = ±y, between which h has at most one extremum.
+
+use super::OrderedCrossings;
+use crate::ray::Ray;
+use glam::DVec3;
+
+/// Golden-section steps at most per stretch of the ray.
+const MAX_SEARCH: usize = 60;
+
+/// Root refinement steps at most (each narrows a bracket by secant or bisection).
+const MAX_REFINE: usize = 80;
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Superellipsoid {
+    /// 2/e: the exponent across x and y.
+    p_xy: f64,
+    /// 2/n: the exponent between the x-y norm and z.
+    p_z: f64,
+}
+
+/// ‖(a, b)‖_p for non-negative a and b, factored by the larger so that large exponents
+/// neither overflow nor lose the smaller term.
+fn p_norm(a: f64, b: f64, p: f64) -> f64 {
+    let (big, small) = if a >= b { (a, b) } else { (b, a) };
+    if big == 0.0 {
+        return 0.0;
+    }
+    big * (1.0 + (small / big).powf(p)).powf(1.0 / p)
+}
+
+impl Superellipsoid {
+    /// The shape with POV-Ray's exponents; they must be positive (the evaluator checks).
+    pub fn new(e: f64, n: f64) -> Superellipsoid {
+        Superellipsoid {
+            p_xy: 2.0 / e,
+            p_z: 2.0 / n,
+        }
+    }
+
+    fn convex(&self) -> bool {
+        self.p_xy >= 1.0 && self.p_z >= 1.0
+    }
+
+    /// The nested norm h; the surface is h = 1.
+    pub fn gauge(&self, p: DVec3) -> f64 {
+        let across = p_norm(p.x.abs(), p.y.abs(), self.p_xy);
+        p_norm(across, p.z.abs(), self.p_z)
+    }
+
+    pub fn inside(&self, p: DVec3) -> bool {
+        self.gauge(p) < 1.0
+    }
+
+    /// The gradient of h: for a p-norm N of (a, b), ∂N/∂a = (a/N)^(p-1).
+    pub fn normal(&self, p: DVec3) -> DVec3 {
+        let (ax, ay, az) = (p.x.abs(), p.y.abs(), p.z.abs());
+        let across = p_norm(ax, ay, self.p_xy);
+        let h = p_norm(across, az, self.p_z);
+        if h == 0.0 {
+            return DVec3::Y;
+        }
+        // Ratios are floored so that a negative power (a pinched shape's edges) stays
+        // finite; the normal there is a crease's anyway.
+        let ratio = |a: f64, b: f64, q: f64| {
+            if b == 0.0 {
+                0.0
+            } else {
+                (a / b).max(1e-150).powf(q - 1.0)
+            }
+        };
+        let d_across = ratio(across, h, self.p_z);
+        let n = DVec3::new(
+            d_across * ratio(ax, across, self.p_xy) * p.x.signum(),
+            d_across * ratio(ay, across, self.p_xy) * p.y.signum(),
+            ratio(az, h, self.p_z) * p.z.signum(),
+        );
+        if n.is_finite() { n } else { p }
+    }
+
+    /// The crossings in one stretch where φ has at most one interior extremum; true when
+    /// `take` has had enough.
+    #[allow(clippy::too_many_arguments)]
+    fn stretch(
+        &self,
+        phi: &dyn Fn(f64) -> f64,
+        a: f64,
+        fa: f64,
+        b: f64,
+        fb: f64,
+        lipschitz: f64,
+        take: &mut dyn FnMut(f64) -> bool,
+    ) -> bool {
+        if (fa < 0.0) != (fb < 0.0) {
+            return take(refine(phi, a, fa, b, fb));
+        }
+        // Both ends on one side: look for an extremum on the other side. Outside, the
+        // minimum; inside, the maximum.
+        let sign = if fa < 0.0 { -1.0 } else { 1.0 };
+        let g = |t: f64| sign * phi(t);
+        let ratio = 0.5 * (5f64.sqrt() - 1.0);
+        let (mut lo, mut hi) = (a, b);
+        let mut x1 = hi - ratio * (hi - lo);
+        let mut x2 = lo + ratio * (hi - lo);
+        let (mut g1, mut g2) = (g(x1), g(x2));
+        for _ in 0..MAX_SEARCH {
+            let (best_t, best) = if g1 < g2 { (x1, g1) } else { (x2, g2) };
+            if best < 0.0 {
+                let fm = phi(best_t);
+                return take(refine(phi, a, fa, best_t, fm))
+                    || take(refine(phi, best_t, fm, b, fb));
+            }
+            // A convex gauge is Lipschitz with |∇h| <= √3: no crossing can hide in a
+            // bracket too short to drop below zero from here.
+            if self.convex() && sign > 0.0 && best > lipschitz * (hi - lo) {
+                return false;
+            }
+            if hi - lo <= 1e-13 * (b - a).max(f64::MIN_POSITIVE) {
+                return false;
+            }
+            if g1 < g2 {
+                hi = x2;
+                x2 = x1;
+                g2 = g1;
+                x1 = hi - ratio * (hi - lo);
+                g1 = g(x1);
+            } else {
+                lo = x1;
+                x1 = x2;
+                g1 = g2;
+                x2 = lo + ratio * (hi - lo);
+                g2 = g(x2);
+            }
+        }
+        false
+    }
+}
+
+impl OrderedCrossings for Superellipsoid {
+    fn crossings(&self, ray: &Ray, tmin: f64, tmax: f64, take: &mut dyn FnMut(f64) -> bool) {
+        let Some((t0, t1)) = unit_box_span(ray) else {
+            return;
+        };
+        let (t0, t1) = (t0.max(tmin), t1.min(tmax));
+        if t0 >= t1 {
+            return;
+        }
+        let phi = |t: f64| self.gauge(ray.at(t)) - 1.0;
+        // Where the ray changes octant or crosses a diagonal plane, for pinched shapes.
+        let mut cuts = [0.0; 7];
+        let mut n = 0;
+        cuts[n] = t0;
+        n += 1;
+        if !self.convex() {
+            let (o, d) = (ray.origin, ray.direction);
+            for (num, den) in [
+                (o.x, d.x),
+                (o.y, d.y),
+                (o.z, d.z),
+                (o.x - o.y, d.x - d.y),
+                (o.x + o.y, d.x + d.y),
+            ] {
+                let t = -num / den;
+                if t > t0 && t < t1 {
+                    cuts[n] = t;
+                    n += 1;
+                }
+            }
+        }
+        cuts[n] = t1;
+        n += 1;
+        cuts[..n].sort_by(f64::total_cmp);
+        let scale = ray.direction.length() * 3f64.sqrt();
+        let mut f_lo = phi(cuts[0]);
+        for w in 1..n {
+            let (a, b) = (cuts[w - 1], cuts[w]);
+            let f_hi = phi(b);
+            if b - a > 0.0 && self.stretch(&phi, a, f_lo, b, f_hi, scale, take) {
+                return;
+            }
+            f_lo = f_hi;
+        }
+    }
+}
+
+/// Where the ray is inside the box from -1 to 1.
+fn unit_box_span(ray: &Ray) -> Option<(f64, f64)> {
+    let (mut t0, mut t1) = (f64::NEG_INFINITY, f64::INFINITY);
+    for axis in 0..3 {
+        let (o, d) = (ray.origin[axis], ray.direction[axis]);
+        if d == 0.0 {
+            if o.abs() > 1.0 {
+                return None;
+            }
+            continue;
+        }
+        let (a, b) = ((-1.0 - o) / d, (1.0 - o) / d);
+        t0 = t0.max(a.min(b));
+        t1 = t1.min(a.max(b));
+    }
+    (t0 <= t1).then_some((t0, t1))
+}
+
+/// The root of φ between `a` and `b`, whose values differ in sign: the Illinois variant of
+/// regula falsi, which keeps the bracket and converges superlinearly, down to the last
+/// representable step.
+pub(crate) fn refine(phi: &dyn Fn(f64) -> f64, a: f64, fa: f64, b: f64, fb: f64) -> f64 {
+    let (mut a, mut fa, mut b, mut fb) = (a, fa, b, fb);
+    let mut side = 0i8;
+    for _ in 0..MAX_REFINE {
+        let mut m = if fa != fb {
+            (a * fb - b * fa) / (fb - fa)
+        } else {
+            0.5 * (a + b)
+        };
+        if !(m > a.min(b) && m < a.max(b)) {
+            m = 0.5 * (a + b);
+        }
+        if m == a || m == b {
+            break;
+        }
+        let fm = phi(m);
+        if fm == 0.0 {
+            return m;
+        }
+        if (fm < 0.0) == (fa < 0.0) {
+            a = m;
+            fa = fm;
+            if side == -1 {
+                fb *= 0.5;
+            }
+            side = -1;
+        } else {
+            b = m;
+            fb = fm;
+            if side == 1 {
+                fa *= 0.5;
+            }
+            side = 1;
+        }
+        if (b - a).abs() <= 1e-14 * (a.abs() + b.abs()) {
+            break;
+        }
+    }
+    // The end whose value is smaller is the better estimate.
+    if fa.abs() < fb.abs() { a } else { b }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shapes::Roots;
+
+    #[test]
+    fn unit_exponents_make_the_unit_sphere() {
+        let s = Superellipsoid::new(1.0, 1.0);
+        let ray = Ray::new(DVec3::new(0.3, 0.2, -5.0), DVec3::Z);
+        let t = s.first_hit(&ray, 0.0, f64::INFINITY).unwrap();
+        let expected = 5.0 - (1.0f64 - 0.09 - 0.04).sqrt();
+        assert!((t - expected).abs() < 1e-12, "{t} against {expected}");
+        let p = ray.at(t);
+        assert!((s.normal(p).normalize() - p).length() < 1e-9);
+    }
+
+    #[test]
+    fn small_exponents_approach_the_box() {
+        let s = Superellipsoid::new(0.1, 0.1);
+        let ray = Ray::new(DVec3::new(0.5, 0.5, -5.0), DVec3::Z);
+        let t = s.first_hit(&ray, 0.0, f64::INFINITY).unwrap();
+        assert!((t - 4.0).abs() < 1e-3, "{t}");
+        assert!(s.normal(ray.at(t)).normalize().z < -0.99);
+    }
+
+    #[test]
+    fn pinched_shapes_find_both_sides_of_a_waist() {
+        // e = n = 3: a star whose arms run along the axes; a ray along x at height 0.05
+        // crosses the arm, leaves it and meets the opposite arm.
+        let s = Superellipsoid::new(3.0, 3.0);
+        let ray = Ray::new(DVec3::new(-2.0, 0.02, 0.02), DVec3::X);
+        let mut roots = Roots::new();
+        s.intersect(&ray, &mut roots);
+        let ts: Vec<f64> = roots.as_slice().iter().map(|r| r.t).collect();
+        assert_eq!(ts.len(), 2, "{ts:?}");
+        for t in ts {
+            assert!(s.gauge(ray.at(t)) - 1.0 < 1e-9);
+        }
+        assert!(s.inside(DVec3::new(0.9, 0.0, 0.0)));
+        assert!(!s.inside(DVec3::new(0.5, 0.5, 0.5)));
+    }
+
+    #[test]
+    fn grazing_rays_give_no_nan() {
+        let s = Superellipsoid::new(0.25, 0.5);
+        for k in 0..200 {
+            let y = 0.99 + k as f64 * 1e-4;
+            let ray = Ray::new(DVec3::new(-3.0, y, 0.0), DVec3::X);
+            if let Some(t) = s.first_hit(&ray, 0.0, f64::INFINITY) {
+                assert!(t.is_finite());
+                assert!(s.normal(ray.at(t)).is_finite());
+            }
+        }
+    }
+}
