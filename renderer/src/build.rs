@@ -7,7 +7,7 @@ use crate::bvh::Bvh;
 use crate::colour::Sample;
 use crate::interior::Interior;
 use crate::light::Light;
-use crate::material::Material;
+use crate::material::{Material, Surface};
 use crate::object::{Csg, CsgKind, Leaf, Object, Visibility};
 use crate::shapes::{
     Cone, Cuboid, Cylinder, Disc, Plane, Shape, ShapeReport, Sphere, Torus, Triangle,
@@ -429,10 +429,29 @@ impl Builder {
                 None => return Ok(None),
             },
         };
-        let material = self.material(texture, &object.origin)?;
+        let mut material = self.material(texture, &object.origin)?;
         let to_world = object.transform.matrix * frame;
         if !to_world.is_finite() || to_world.matrix3.determinant() == 0.0 {
             return Err(fail("the object's transformation is singular".into()));
+        }
+        if let (scene::Shape::Blob(blob), Shape::Math(math)) = (&object.shape, &shape)
+            && let crate::shapes::MathShape::Blob(runtime) = math.as_ref()
+            && blob.components.iter().any(|c| c.texture.is_some())
+        {
+            // Each component shows its own texture (or the blob's) by its share of the field.
+            let mut surfaces = vec![material.surface.clone()];
+            for c in &blob.components {
+                let m = self.material(c.texture.as_ref().or(texture), &object.origin)?;
+                surfaces.push(m.surface.clone());
+            }
+            let surface = Surface::Blend {
+                weights: runtime.texture_weights(to_world.inverse()),
+                surfaces,
+            };
+            material = Arc::new(Material {
+                transmits: surface.may_transmit(),
+                surface,
+            });
         }
         let mut leaf = Leaf::new(
             shape,

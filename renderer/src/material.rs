@@ -28,6 +28,18 @@ pub enum Surface {
         /// Map values ascending, with their surfaces.
         map: Vec<(f64, Surface)>,
     },
+    /// Surfaces mixed by weights that depend on the point (a blob's component textures,
+    /// by each component's share of the field).
+    Blend {
+        weights: Arc<dyn SurfaceWeights>,
+        surfaces: Vec<Surface>,
+    },
+}
+
+/// The weight of each of a blend's surfaces at a world point, not necessarily summing to
+/// one (they are normalised).
+pub trait SurfaceWeights: std::fmt::Debug + Send + Sync {
+    fn weights(&self, p: DVec3, out: &mut Vec<f64>);
 }
 
 /// A surface with what the tracer needs to know about it at a glance.
@@ -77,6 +89,22 @@ impl Surface {
                     map[b].1.for_each_layers(p, weight * t, f);
                 }
             }
+            Surface::Blend { weights, surfaces } => {
+                let mut w = Vec::with_capacity(surfaces.len());
+                weights.weights(p, &mut w);
+                let total: f64 = w.iter().sum();
+                if total <= 0.0 || !total.is_finite() {
+                    // Outside every component's reach (a point of a CSG's other surface):
+                    // the first surface, the blob's own texture.
+                    surfaces[0].for_each_layers(p, weight, f);
+                    return;
+                }
+                for (surface, w) in surfaces.iter().zip(w) {
+                    if w > 0.0 {
+                        surface.for_each_layers(p, weight * w / total, f);
+                    }
+                }
+            }
         }
     }
 
@@ -95,10 +123,11 @@ impl Surface {
     }
 
     /// Whether light can pass somewhere: every layer of some stack lets some through.
-    fn may_transmit(&self) -> bool {
+    pub fn may_transmit(&self) -> bool {
         match self {
             Surface::Layers(layers) => layers.iter().all(|l| l.pigment.may_transmit()),
             Surface::Pattern { map, .. } => map.iter().any(|(_, s)| s.may_transmit()),
+            Surface::Blend { surfaces, .. } => surfaces.iter().any(Surface::may_transmit),
         }
     }
 }

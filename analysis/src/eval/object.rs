@@ -566,6 +566,14 @@ pub fn transform_object(object: &mut Object, t: &Transform) {
                 super::light::transform_light(light, t);
             }
         }
+        Shape::Blob(blob) => {
+            object.transform = object.transform.then(t);
+            for c in &mut blob.components {
+                if let Some(texture) = &mut c.texture {
+                    super::texture::transform_texture(Arc::make_mut(texture), t);
+                }
+            }
+        }
         _ => object.transform = object.transform.then(t),
     }
     if let Some(texture) = &mut object.texture {

@@ -10,9 +10,11 @@
 use super::OrderedCrossings;
 use super::plane_curve;
 use crate::bounds::Aabb;
+use crate::material::SurfaceWeights;
 use crate::ray::Ray;
 use analysis::scene::math_shapes::BlobShape;
 use glam::{DAffine3, DVec3};
+use std::sync::Arc;
 
 /// One component in its own frame, with the frame's placement in the blob.
 #[derive(Debug, Clone, PartialEq)]
@@ -206,6 +208,33 @@ impl Blob {
     /// Outward: the field falls away from the inside.
     pub fn normal(&self, p: DVec3) -> DVec3 {
         -self.components.iter().map(|c| c.gradient(p)).sum::<DVec3>()
+    }
+}
+
+/// The blend of a blob's component textures: each component's share of the (positive)
+/// field at the point, the blob's own texture first with no weight of its own.
+#[derive(Debug)]
+struct ComponentShares {
+    blob: Blob,
+    to_local: DAffine3,
+}
+
+impl SurfaceWeights for ComponentShares {
+    fn weights(&self, p: DVec3, out: &mut Vec<f64>) {
+        let p = self.to_local.transform_point3(p);
+        out.push(0.0);
+        out.extend(self.blob.components.iter().map(|c| c.field(p).max(0.0)));
+    }
+}
+
+impl Blob {
+    /// Weights for blending the blob's texture (first) and its components' (then, in
+    /// order), given the map from world to the blob's frame.
+    pub fn texture_weights(&self, to_local: DAffine3) -> Arc<dyn SurfaceWeights> {
+        Arc::new(ComponentShares {
+            blob: self.clone(),
+            to_local,
+        })
     }
 }
 

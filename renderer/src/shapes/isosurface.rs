@@ -123,7 +123,7 @@ impl Search<'_> {
             self.max_gradient = slope * over * over;
             reach = self.max_gradient * self.speed * span;
         }
-        if span < self.iso.accuracy {
+        if span * self.speed < self.iso.accuracy {
             return (f2 < 0.0).then_some(t2);
         }
         if f1 + f2 - reach >= 0.0 {
@@ -212,7 +212,6 @@ impl Isosurface {
             return;
         }
         t1 = t1.max(0.0);
-        let accuracy = self.accuracy;
         let max_gradient = self.max_gradient.max(self.record.adapted.get());
         let mut search = Search {
             iso: self,
@@ -226,6 +225,11 @@ impl Isosurface {
         if !(search.speed > 0.0 && search.speed.is_finite()) {
             return;
         }
+        // The accuracy is a distance in the isosurface's own frame; along the ray, whose
+        // parameter is the world's, it spans this much of t. Compared with values, it
+        // stays a distance.
+        let accuracy = self.accuracy / search.speed;
+        let reach = max_gradient * self.accuracy * 4.0;
         let mut traced = 0u32;
         let mut found = Roots::new();
         if self.closed {
@@ -237,7 +241,7 @@ impl Isosurface {
                     search.side = -search.side;
                 }
             } else {
-                if at_entry < max_gradient * accuracy * 4.0 {
+                if at_entry < reach {
                     t1 = accuracy * 5.0;
                     if search.value(t1) < 0.0 {
                         search.side = -1.0;
@@ -253,10 +257,7 @@ impl Isosurface {
         if tmax - tmin < accuracy {
             return;
         }
-        if tmin < accuracy
-            && search.side == 1.0
-            && search.value(tmin).abs() < max_gradient * accuracy * 4.0
-        {
+        if tmin < accuracy && search.side == 1.0 && search.value(tmin).abs() < reach {
             // Starting on the surface (a shadow ray from it): step off first.
             tmin = accuracy * 5.0;
             if search.value(tmin) < 0.0 {

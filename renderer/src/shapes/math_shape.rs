@@ -163,9 +163,6 @@ pub fn build(
         )
         .map(|prism| (MathShape::Prism(prism), identity))),
         scene::Shape::Blob(b) => {
-            if b.components.iter().any(|c| c.texture.is_some()) {
-                return Err("not supported yet: textures on blob components".into());
-            }
             let components = b
                 .components
                 .iter()

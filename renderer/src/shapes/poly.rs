@@ -122,12 +122,23 @@ impl Poly {
         let Some((lo, hi, centre)) = self.span(ray) else {
             return 0;
         };
-        let coeffs = self.along(ray.origin + ray.direction * centre, ray.direction);
-        let (a, b) = (lo - centre, hi - centre);
+        let mut coeffs = self.along(ray.origin + ray.direction * centre, ray.direction);
+        // In units of the half-span, so that the solvers, which judge coefficients against
+        // the largest, weigh them alike at any scale of the scene.
+        let half = (lo - centre).abs().max((hi - centre).abs());
+        if !(half > 0.0 && half.is_finite()) {
+            return 0;
+        }
+        let mut power = 1.0;
+        for c in &mut coeffs[..=self.order] {
+            *c *= power;
+            power *= half;
+        }
+        let (a, b) = ((lo - centre) / half, (hi - centre) / half);
         let mut n = 0;
         let mut put = |x: f64| {
             if n < out.len() {
-                out[n] = x + centre;
+                out[n] = x * half + centre;
                 n += 1;
             }
         };

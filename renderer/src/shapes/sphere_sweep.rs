@@ -21,6 +21,9 @@ const MAX_SPLITS: u32 = 12;
 /// The most sphere tracing steps in one capsule.
 const MAX_STEPS: usize = 96;
 
+/// Points of a capsule's remaining span probed once sphere tracing has stalled.
+const SCAN_SAMPLES: usize = 64;
+
 /// A cubic (or lower) curve segment with its radius, for s in 0..1.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Segment {
@@ -290,10 +293,42 @@ impl SphereSweep {
                 }
                 return Some(self.polish(piece, ray, t, s));
             }
-            t += sign * d / speed;
+            // d is measured at the sphere that minimises |p - c|² - r², which for a varying
+            // radius need not be the nearest: stepping by d could pass the surface. With
+            // |p - c|² - r² = d (d + 2r) and the nearest sphere's |p - c| + r at most
+            // d + 2·reach, this step stays short of it.
+            let r = self.segments[piece.segment as usize].radius(s);
+            let safe = d * (d + 2.0 * r) / (d + 2.0 * piece.reach);
+            t += sign * safe / speed;
             if t > t1 || t < t0 {
                 return None;
             }
+        }
+        // Sphere tracing crawls beside a grazing ray, in ever shorter steps, and how far it
+        // gets would depend on the tolerance. The rest of the span is scanned for a point
+        // inside instead, and the crossing bisected between it and the last point outside.
+        let end = if entering { t1 } else { t0 };
+        let inside = |t: f64| self.piece_distance(piece, ray.at(t), guess).0 < 0.0;
+        let mut outside = t;
+        for k in 1..=SCAN_SAMPLES {
+            let probe = t + (end - t) * (k as f64 / SCAN_SAMPLES as f64);
+            if inside(probe) {
+                let mut deep = probe;
+                for _ in 0..64 {
+                    let mid = 0.5 * (outside + deep);
+                    if mid == outside || mid == deep {
+                        break;
+                    }
+                    if inside(mid) {
+                        deep = mid;
+                    } else {
+                        outside = mid;
+                    }
+                }
+                let (_, s) = self.piece_distance(piece, ray.at(outside), guess);
+                return Some(self.polish(piece, ray, outside, s));
+            }
+            outside = probe;
         }
         None
     }

@@ -1,5 +1,6 @@
 // Blob fidelity: spheres merging, a cylinder component, a negative component denting
-// another, and an unevenly scaled component.
+// another, an unevenly scaled component, and components with textures of their own
+// blended where they merge.
 #version 3.7;
 #declare S = 1;
 global_settings { assumed_gamma 1.0 }
@@ -23,3 +24,8 @@ blob { threshold 0.3
   component 1, 0.9, <0, 0, 0>
   component 1, 0.9, <0, 0.9, 0>
   sturm translate <2.8, 0, 0.5> scale S pigment { rgb <0.2, 0.4, 0.9> } finish { F } }
+blob { threshold 0.5
+  sphere { <-0.5, 0, 0>, 0.9, 1 pigment { rgb <1, 0.9, 0.2> } }
+  sphere { <0.5, 0, 0>, 0.9, 1 pigment { rgb <0.7, 0.2, 0.9> } finish { specular 0.1 } }
+  cylinder { <0, 0, 0>, <0, 0.9, 0>, 0.5, 0.8 }
+  translate <0, -0.1, -2.2> scale S pigment { rgb <0.2, 0.8, 0.8> } finish { F } }

@@ -11,17 +11,8 @@
 //! best of three, so that both renderers are timed under the same load.
 
 use std::time::{Duration, Instant};
+use tests::cpu_time::process_cpu_time;
 use tests::fidelity::{manifest, reference_dir};
-
-/// CPU time used so far by every thread of this process, where Linux tells it.
-fn process_cpu_time() -> Option<Duration> {
-    let mut total = 0u64;
-    for task in std::fs::read_dir("/proc/self/task").ok()? {
-        let stat = std::fs::read_to_string(task.ok()?.path().join("schedstat")).ok()?;
-        total += stat.split_whitespace().next()?.parse::<u64>().ok()?;
-    }
-    Some(Duration::from_nanos(total))
-}
 
 fn best_of_three(scene: &tests::fidelity::FidelityScene, source: &str, cpu_time: bool) -> Duration {
     (0..3)
