@@ -78,6 +78,13 @@ impl Surface {
     pub fn for_each_layers(&self, p: DVec3, weight: f64, f: &mut impl FnMut(f64, &[Layer])) {
         match self {
             Surface::Layers(layers) => f(weight, layers),
+            Surface::Pattern { pattern, map }
+                if matches!(pattern.kind, scene::PatternKind::Average) =>
+            {
+                for (share, surface) in pattern::average_shares(map) {
+                    surface.for_each_layers(p, weight * share, f);
+                }
+            }
             Surface::Pattern { pattern, map } => {
                 let (a, b, t) = locate(map, pattern::evaluate(pattern, p));
                 if a == b || t == 0.0 {
@@ -153,6 +160,14 @@ impl Pigment {
     pub fn colour_at(&self, p: DVec3) -> Colour {
         match self {
             Pigment::Solid(c) => *c,
+            Pigment::Pattern { pattern, map }
+                if matches!(pattern.kind, scene::PatternKind::Average) =>
+            {
+                pattern::weighted_colour(
+                    pattern::average_shares(map)
+                        .map(|(share, pigment)| (share, pigment.colour_at(p))),
+                )
+            }
             Pigment::Pattern { pattern, map } => {
                 let (a, b, t) = locate(map, pattern::evaluate(pattern, p));
                 if a == b || t == 0.0 {
@@ -325,6 +340,19 @@ mod tests {
             vec![(1.0, DVec3::Y)]
         );
         assert!(!m.transmits);
+    }
+
+    #[test]
+    fn an_average_shows_every_texture_by_its_weight() {
+        let average = scene::Texture::Pattern {
+            pattern: Box::new(Pattern::new(PatternKind::Average)),
+            map: BlendMap {
+                entries: vec![(1.0, plain(DVec3::X)), (3.0, plain(DVec3::Y))],
+            },
+        };
+        let m = Material::from_scene(&average).unwrap();
+        let seen = weights(&m, DVec3::new(0.25, 7.0, 0.0));
+        assert_eq!(seen, vec![(0.25, DVec3::X), (0.75, DVec3::Y)]);
     }
 
     #[test]

@@ -69,11 +69,20 @@ pub fn perturb(normal: &scene::Normal, p: DVec3, n: DVec3) -> DVec3 {
 }
 
 /// A normal map: the entries either side of the pattern's value, each perturbing the
-/// normal, blended by their weights.
+/// normal, blended by their weights; with `average`, every entry by its share.
 fn mapped(pattern: &Pattern, map: &BlendMap<scene::Normal>, p: DVec3, n: DVec3) -> DVec3 {
     let entries = &map.entries;
     if entries.is_empty() {
         return n;
+    }
+    if matches!(pattern.kind, PatternKind::Average) {
+        // Each entry perturbs its own copy of the normal; the copies are weighted, added
+        // and normalized.
+        return pattern::average_shares(entries)
+            .fold(DVec3::ZERO, |sum, (share, entry)| {
+                sum + perturb(entry, p, n) * share
+            })
+            .normalize_or_zero();
     }
     let (a, b, t) = match pattern::evaluate(pattern, p) {
         PatternValue::Block(i) => {
@@ -232,6 +241,27 @@ mod tests {
         };
         assert!((slope_profile(&bump, 0.5) - 0.5).abs() < 1e-12);
         assert!(slope_profile(&bump, 0.1) < 0.1);
+    }
+
+    #[test]
+    fn an_average_adds_its_entries_perturbed_normals() {
+        let bumps = |amount: f64| scene::Normal {
+            kind: NormalKind::Pattern {
+                pattern: Box::new(Pattern::new(PatternKind::Gradient(DVec3::X))),
+                bump_size: amount,
+                slope_map: None,
+            },
+            accuracy: 0.02,
+        };
+        let map = BlendMap {
+            entries: vec![(1.0, bumps(0.5)), (1.0, bumps(-0.5))],
+        };
+        // Opposite tilts of equal weight cancel, leaving the surface normal.
+        let p = DVec3::new(0.3, 0.0, 0.0);
+        let n = mapped(&Pattern::new(PatternKind::Average), &map, p, DVec3::Y);
+        assert!((n - DVec3::Y).length() < 1e-9, "{n}");
+        let tilted = perturb(&bumps(0.5), p, DVec3::Y);
+        assert!((tilted - DVec3::Y).length() > 1e-3);
     }
 
     #[test]

@@ -81,7 +81,12 @@ impl Evaluator<'_> {
             match token.kind {
                 R_BRACE => break,
                 L_BRACK => {
-                    let value = self.float()?;
+                    // An average's entries may leave out their weight, which is then 1.
+                    let value = if self.value_follows()? {
+                        self.float()?
+                    } else {
+                        1.0
+                    };
                     self.eat(COMMA)?;
                     let normal = if self.eat(NORMAL_KW)? {
                         self.normal_body()?

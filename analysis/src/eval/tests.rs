@@ -2,7 +2,7 @@
 
 use super::*;
 use crate::files::MemoryFiles;
-use crate::scene::Shape;
+use crate::scene::{Shape, Texture};
 use expect_test::{Expect, expect};
 
 fn eval(text: &str) -> Evaluation {
@@ -309,4 +309,55 @@ fn fuzzer_findings_give_located_errors() {
         let evaluation = eval(text);
         syntax::diagnostic::render_human(&evaluation.diagnostics, &evaluation.sources);
     }
+}
+
+#[test]
+fn texture_map_entries_are_texture_bodies() {
+    // POV-Ray 3.7 reads `[value ...]` as the inside of a texture: an identifier and its
+    // modifiers, or pigment, normal and finish items; `texture { }` there is an error.
+    let scene = evaluate_ok(
+        "#declare T = texture { pigment { rgb 1 } }
+         sphere { 0, 1 texture { gradient x texture_map {
+             [0 T finish { phong 1 }]
+             [1 pigment { rgb 0 } normal { bumps 0.3 } scale 2] } } }",
+    );
+    let texture = scene.objects[0].texture.clone().expect("a texture");
+    let Texture::Pattern { map, .. } = &*texture else {
+        panic!("not a texture map")
+    };
+    assert_eq!(map.entries.len(), 2);
+    let Texture::Plain { finish, .. } = &map.entries[0].1 else {
+        panic!("not a plain texture")
+    };
+    assert_eq!(finish.phong, 1.0);
+    let message = evaluate_err(
+        "#declare T = texture { gradient x texture_map { [0 texture { pigment { rgb 1 } }] } }",
+    );
+    assert!(message.contains("in texture, found"), "{message}");
+}
+
+#[test]
+fn average_maps_may_leave_out_their_weights() {
+    let scene = evaluate_ok(
+        "sphere { 0, 1 texture { average texture_map { [pigment { rgb 1 }] [2 finish { phong 1 }] } } }
+         sphere { 0, 1 normal { average normal_map { [gradient x, -5 scallop_wave] [bumps 0.5] } } }",
+    );
+    let texture = scene.objects[0].texture.clone().expect("a texture");
+    let Texture::Pattern { map, .. } = &*texture else {
+        panic!("not a texture map")
+    };
+    let weights: Vec<f64> = map.entries.iter().map(|(w, _)| *w).collect();
+    assert_eq!(weights, [1.0, 2.0]);
+    let normal_texture = scene.objects[1].texture.clone().expect("a texture");
+    let Texture::Plain {
+        normal: Some(normal),
+        ..
+    } = &*normal_texture
+    else {
+        panic!("no normal")
+    };
+    let crate::scene::NormalKind::Map { map, .. } = &normal.kind else {
+        panic!("not a normal map")
+    };
+    assert_eq!(map.entries.len(), 2);
 }

@@ -30,6 +30,15 @@ impl Evaluator<'_> {
     /// `{ ... }` after `texture`.
     pub fn texture_body(&mut self) -> Result<Texture> {
         self.expect(L_BRACE, "'{'")?;
+        let texture = self.texture_inner(R_BRACE)?;
+        self.expect(R_BRACE, "'}'")?;
+        Ok(texture)
+    }
+
+    /// The inside of a texture, up to (not including) `end`: `}` for `texture { }`, `]` for
+    /// a texture map entry, which POV-Ray reads as a texture body (`[0.5 T finish {...}]`,
+    /// `[0.5 pigment {...}]`).
+    fn texture_inner(&mut self, end: SyntaxKind) -> Result<Texture> {
         let first = self.next()?;
         let mut texture = match first.slot.as_ref().map(|s| s.borrow().clone()) {
             Some(Value::Texture(t)) => Texture::clone(&t),
@@ -38,10 +47,14 @@ impl Evaluator<'_> {
                 self.default_texture.clone()
             }
         };
+        let end_text = if end == R_BRACK { "']'" } else { "'}'" };
         loop {
             let token = self.next()?;
             match token.kind {
-                R_BRACE => return Ok(texture),
+                kind if kind == end => {
+                    self.unget(token);
+                    return Ok(texture);
+                }
                 PIGMENT_KW | NORMAL_KW | FINISH_KW => {
                     // On a layered texture they change the top layer.
                     let Texture::Plain {
@@ -101,7 +114,7 @@ impl Evaluator<'_> {
                         return Err(self.error_at(
                             &token,
                             format!(
-                                "expected a pattern modifier, texture_map or '}}', found {}",
+                                "expected a pattern modifier, texture_map or {end_text}, found {}",
                                 self.describe(&token)
                             ),
                         ));
@@ -111,7 +124,7 @@ impl Evaluator<'_> {
                     return Err(self.error_at(
                         &token,
                         format!(
-                            "expected pigment, normal, finish or '}}' in texture, found {}",
+                            "expected pigment, normal, finish or {end_text} in texture, found {}",
                             self.describe(&token)
                         ),
                     ));
@@ -172,7 +185,7 @@ impl Evaluator<'_> {
         })
     }
 
-    /// `{ [value texture {...}] ... }` after `texture_map`, or a texture map identifier.
+    /// `{ [value texture body] ... }` after `texture_map`, or a texture map identifier.
     fn texture_map_body(&mut self) -> Result<BlendMap<Texture>> {
         let open = self.next()?;
         if open.kind != L_BRACE {
@@ -193,31 +206,14 @@ impl Evaluator<'_> {
             match token.kind {
                 R_BRACE => break,
                 L_BRACK => {
-                    let value = self.float()?;
-                    self.eat(COMMA)?;
-                    let inner = self.next()?;
-                    let texture = match inner.kind {
-                        TEXTURE_KW => {
-                            let mut texture = self.texture_body()?;
-                            while self.eat(TEXTURE_KW)? {
-                                let top = self.texture_body()?;
-                                texture = super::object::layer(texture, top);
-                            }
-                            texture
-                        }
-                        _ => match inner.slot.as_ref().map(|s| s.borrow().clone()) {
-                            Some(Value::Texture(t)) => Texture::clone(&t),
-                            _ => {
-                                return Err(self.error_at(
-                                    &inner,
-                                    format!(
-                                        "expected a texture in texture_map, found {}",
-                                        self.describe(&inner)
-                                    ),
-                                ));
-                            }
-                        },
+                    // An average's entries may leave out their weight, which is then 1.
+                    let value = if self.value_follows()? {
+                        self.float()?
+                    } else {
+                        1.0
                     };
+                    self.eat(COMMA)?;
+                    let texture = self.texture_inner(R_BRACK)?;
                     entries.push((value, texture));
                     self.expect(R_BRACK, "']'")?;
                 }

@@ -32,16 +32,12 @@ pub enum PatternValue {
 
 /// Whether the pattern can be evaluated; `Err` names what is missing.
 pub fn check(pattern: &Pattern) -> Result<(), String> {
-    let unsupported = match &pattern.kind {
-        PatternKind::Average => Some("the average pattern"),
+    match &pattern.kind {
         PatternKind::Object(object) => return inside::check(object),
         PatternKind::Facets { .. } => {
             return Err("the facets pattern can only be used in a normal".into());
         }
-        _ => None,
-    };
-    if let Some(what) = unsupported {
-        return Err(format!("not supported yet: {what}"));
+        _ => {}
     }
     if let PatternKind::Function(f) = &pattern.kind
         && let Some(missing) = f.unsupported()
@@ -95,6 +91,26 @@ pub fn blend_position(
     (upper - 1, upper, t)
 }
 
+/// The average pattern's blend of its map: each entry with its share, the weight written
+/// in its place (1 when left out) over the total of the weights; no share when the
+/// weights add up to zero.
+pub fn average_shares<T>(entries: &[(f64, T)]) -> impl Iterator<Item = (f64, &T)> {
+    let total: f64 = entries.iter().map(|(weight, _)| weight).sum();
+    entries
+        .iter()
+        .filter(move |_| total != 0.0)
+        .map(move |(weight, item)| (weight / total, item))
+}
+
+/// The sum of colours each scaled by its share, all five components alike.
+pub fn weighted_colour(parts: impl Iterator<Item = (f64, Colour)>) -> Colour {
+    parts.fold(Colour::BLACK, |sum, (share, c)| Colour {
+        rgb: sum.rgb + c.rgb * share,
+        filter: sum.filter + c.filter * share,
+        transmit: sum.transmit + c.transmit * share,
+    })
+}
+
 /// The colour of a scene pigment at a world point, for pigment functions.
 pub fn pigment_colour(pigment: &Pigment, world: DVec3) -> Colour {
     match pigment {
@@ -106,6 +122,12 @@ pub fn pigment_colour(pigment: &Pigment, world: DVec3) -> Colour {
             let entries = &map.entries;
             if entries.is_empty() {
                 return Colour::BLACK;
+            }
+            if matches!(pattern.kind, PatternKind::Average) {
+                return weighted_colour(
+                    average_shares(entries)
+                        .map(|(share, entry)| (share, pigment_colour(entry, world))),
+                );
             }
             match evaluate(pattern, world) {
                 PatternValue::Block(i) => {
