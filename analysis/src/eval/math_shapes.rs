@@ -562,12 +562,8 @@ impl Evaluator<'_> {
         }
         // The first and last points only set the slopes at the ends (the manual's vase
         // starts with two points at one height); the points on the curve must climb.
-        let n = points.len();
-        if points[1..n - 1].windows(2).any(|w| w[1].y <= w[0].y)
-            || points[2].y <= points[0].y
-            || points[n - 1].y <= points[n - 3].y
-        {
-            return Err(self.error_at(keyword, "a sor's points must have increasing y coordinates"));
+        if let Some(message) = sor_points_problem(&points) {
+            return Err(self.error_at(keyword, message));
         }
         let (mut open, mut sturm) = (false, false);
         loop {
@@ -840,4 +836,22 @@ fn check_spline_points(kind: SplineKind, n: usize) -> std::result::Result<(), St
     } else {
         Err(format!("{n} points are too few for this spline"))
     }
+}
+
+/// What POV-Ray 3.7 rejects in a sor's points: the curve's points (all but the first and
+/// last, which only steer it) must rise in y, and the slope at the second and next-to-last
+/// points, taken across their neighbours, needs neighbours at different heights.
+fn sor_points_problem(points: &[DVec2]) -> Option<&'static str> {
+    let n = points.len();
+    if points[1..n - 1].windows(2).any(|w| w[1].y <= w[0].y) {
+        return Some(
+            "a sor's points, but for the first and last, must have increasing y coordinates",
+        );
+    }
+    if points[2].y == points[0].y || points[n - 1].y == points[n - 3].y {
+        return Some(
+            "a sor's first and third points (and its last and third from last) need different y coordinates",
+        );
+    }
+    None
 }

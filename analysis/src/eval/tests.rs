@@ -361,3 +361,13 @@ fn average_maps_may_leave_out_their_weights() {
     };
     assert_eq!(map.entries.len(), 2);
 }
+
+#[test]
+fn a_sor_needs_distinct_heights_around_its_end_slopes() {
+    // POV-Ray 3.7 stops ("Incorrect point in surface of revolution") when the first and third
+    // points, or the last and third from last, are at one height, and accepts any other
+    // heights for the first and last points.
+    let message = evaluate_err("sor { 5, <0, 2> <1, 1> <1, 2> <1, 3> <0, 4> }");
+    assert!(message.contains("different y coordinates"), "{message}");
+    evaluate_ok("sor { 5, <0, 2.5> <1, 1> <1, 2> <1, 3> <0, 2.01> }");
+}
