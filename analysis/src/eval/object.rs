@@ -282,6 +282,9 @@ impl Evaluator<'_> {
 
     /// The modifiers after a shape's parameters, up to (not including) the closing brace.
     fn object_modifiers(&mut self, object: &mut Object, keyword: &Token) -> Result<()> {
+        // `bounded_by { clipped_by }` and `clipped_by { bounded_by }` take the other list
+        // as it stands when the object ends, whichever comes first.
+        let (mut bounds_are_clips, mut clips_are_bounds) = (false, false);
         loop {
             let token = self.next()?;
             match token.kind {
@@ -338,11 +341,14 @@ impl Evaluator<'_> {
                 },
                 CLIPPED_BY_KW | BOUNDED_BY_KW => {
                     let list = self.object_list(&token)?;
-                    if token.kind == CLIPPED_BY_KW {
-                        object.clipped_by = list;
+                    let clipping = token.kind == CLIPPED_BY_KW;
+                    let (own, refers) = if clipping {
+                        (&mut object.clipped_by, &mut clips_are_bounds)
                     } else {
-                        object.bounded_by = list;
-                    }
+                        (&mut object.bounded_by, &mut bounds_are_clips)
+                    };
+                    *refers = list.is_none();
+                    *own = list.unwrap_or_default();
                 }
                 PHOTONS_KW => {
                     self.object_photons(&mut object.photons)?;
@@ -353,6 +359,11 @@ impl Evaluator<'_> {
                 CUTAWAY_TEXTURES_KW | UV_MAPPING_KW => {}
                 _ => {
                     self.unget(token);
+                    if bounds_are_clips {
+                        object.bounded_by = object.clipped_by.clone();
+                    } else if clips_are_bounds {
+                        object.clipped_by = object.bounded_by.clone();
+                    }
                     return Ok(());
                 }
             }
@@ -442,9 +453,9 @@ impl Evaluator<'_> {
         }
     }
 
-    /// `{ object... }` for clipped_by and bounded_by; `clipped_by { bounded_by }` and the
-    /// converse are kept as empty lists with POV-Ray's meaning resolved by the caller.
-    fn object_list(&mut self, keyword: &Token) -> Result<Vec<Object>> {
+    /// `{ object... }` for clipped_by and bounded_by, or `None` for `clipped_by { bounded_by }`
+    /// and `bounded_by { clipped_by }`, which stand for the other list.
+    fn object_list(&mut self, keyword: &Token) -> Result<Option<Vec<Object>>> {
         self.expect(L_BRACE, "'{'")?;
         let mut list = Vec::new();
         loop {
@@ -452,11 +463,14 @@ impl Evaluator<'_> {
             if token.kind == R_BRACE {
                 break;
             }
-            if matches!(token.kind, CLIPPED_BY_KW | BOUNDED_BY_KW) && list.is_empty() {
-                return Err(self.unsupported(
-                    &token,
-                    &format!("{} {{ {} }}", self.text(keyword), self.text(&token)),
-                ));
+            let other = if keyword.kind == CLIPPED_BY_KW {
+                BOUNDED_BY_KW
+            } else {
+                CLIPPED_BY_KW
+            };
+            if token.kind == other && list.is_empty() {
+                self.expect(R_BRACE, "'}'")?;
+                return Ok(None);
             }
             self.unget(token.clone());
             if !Self::starts_object(token.kind) {
@@ -471,7 +485,7 @@ impl Evaluator<'_> {
             }
             list.push(self.object()?);
         }
-        Ok(list)
+        Ok(Some(list))
     }
 
     /// An optional boolean after a flag keyword: `hollow`, `hollow on`, `hollow off`.
