@@ -33,6 +33,7 @@ impl Evaluator<'_> {
                 };
                 PatternKind::Object(Box::new(object))
             }
+            PIGMENT_PATTERN_KW => PatternKind::PigmentPattern(Box::new(self.pigment_body()?)),
             FACETS_KW => PatternKind::Facets {
                 coords: 0.0,
                 size: 0.1,

@@ -34,6 +34,7 @@ pub enum PatternValue {
 pub fn check(pattern: &Pattern) -> Result<(), String> {
     match &pattern.kind {
         PatternKind::Object(object) => return inside::check(object),
+        PatternKind::PigmentPattern(pigment) => return check_pigment(pigment),
         PatternKind::Facets { .. } => {
             return Err("the facets pattern can only be used in a normal".into());
         }
@@ -273,6 +274,7 @@ pub fn evaluate_warped(pattern: &Pattern, p: DVec3) -> PatternValue {
         PatternKind::Object(object) => {
             return PatternValue::Block(usize::from(inside::inside(object, turbulent(p))));
         }
+        PatternKind::PigmentPattern(pigment) => pigment_colour(pigment, turbulent(p)).grey_value(),
         PatternKind::Marble => p.x + scalar_turbulence(p),
         PatternKind::Spiral1 { arms } => spiral::spiral1(p, *arms, scalar_turbulence(p)),
         PatternKind::Spiral2 { arms } => spiral::spiral2(p, *arms, scalar_turbulence(p)),

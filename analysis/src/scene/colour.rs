@@ -28,6 +28,11 @@ impl Colour {
         Colour::rgb(v, v, v)
     }
 
+    /// POV-Ray's grey value of the colour (`.gray`): 0.297 red + 0.589 green + 0.114 blue.
+    pub fn grey_value(self) -> f64 {
+        self.rgb.dot(DVec3::new(0.297, 0.589, 0.114))
+    }
+
     /// The five components in POV-Ray's order: red, green, blue, filter, transmit.
     pub fn to_array(self) -> [f64; 5] {
         [

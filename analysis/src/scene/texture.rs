@@ -123,6 +123,8 @@ pub enum PatternKind {
     Wood,
     Wrinkles,
     Object(Box<Object>),
+    /// `pigment_pattern { PIGMENT }`: the grey value of the pigment's colour.
+    PigmentPattern(Box<Pigment>),
     /// `mandel N`, `julia <c>, N`, `magnet 1|2 mandel|julia N`: escape-time fractals, with
     /// their `exponent`, `interior` and `exterior` colouring.
     Fractal(Box<Fractal>),
