@@ -1,8 +1,9 @@
 //! From an edit to its published diagnostics, measured through `povrayst lsp` as a process:
 //! a generated 5,000-line scene and the largest of Debian's example scenes, each edited 200
 //! times (a space typed at the end of a middle line, then deleted), waiting each time for
-//! the diagnostics of the new version. Prints the median and 99th percentile and the
-//! server's memory. Run with `cargo bench -p tests --bench lsp_latency`.
+//! the diagnostics of the new version. Prints the median and 99th percentile, the server's
+//! CPU time per edit (which, unlike the latency, other work on a shared machine does not
+//! inflate much) and its memory. Run with `cargo bench -p tests --bench lsp_latency`.
 
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -66,6 +67,16 @@ fn memory(pid: u32) -> String {
     format!("resident {} (peak {})", field("VmRSS:"), field("VmHWM:"))
 }
 
+/// CPU time the process has used, user and system, from `/proc/PID/stat` (in clock ticks
+/// of 10 ms, so only sums over many edits are meaningful).
+fn cpu_time(pid: u32) -> Option<Duration> {
+    let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).ok()?;
+    // The fields after the command name, which is in parentheses and may hold spaces.
+    let fields: Vec<&str> = stat.rsplit_once(')')?.1.split_whitespace().collect();
+    let ticks: u64 = fields.get(11)?.parse::<u64>().ok()? + fields.get(12)?.parse::<u64>().ok()?;
+    Some(Duration::from_millis(ticks * 10))
+}
+
 fn percentile(sorted: &[Duration], fraction: f64) -> Duration {
     let index = ((sorted.len() as f64 - 1.0) * fraction).round() as usize;
     sorted[index]
@@ -82,6 +93,7 @@ fn measure(label: &str, dir: &Path, name: &str, text: &str) {
     let line = lines.len() / 2;
     let column = lines[line].encode_utf16().count() as u32;
     let mut latencies = Vec::with_capacity(EDITS);
+    let cpu_before = cpu_time(server.pid());
     for version in 1..=EDITS as i64 {
         let start = Instant::now();
         if version % 2 == 1 {
@@ -104,9 +116,16 @@ fn measure(label: &str, dir: &Path, name: &str, text: &str) {
         server.diagnostics(&scene, Some(version));
         latencies.push(start.elapsed());
     }
+    let cpu_per_edit = match (cpu_before, cpu_time(server.pid())) {
+        (Some(before), Some(after)) => format!(
+            "{:.1} ms",
+            (after - before).as_secs_f64() * 1e3 / EDITS as f64
+        ),
+        _ => "?".to_owned(),
+    };
     latencies.sort();
     println!(
-        "{label} ({} lines, {} diagnostics): open {:.1} ms; edit to diagnostics median {:.2} ms, p99 {:.2} ms, max {:.2} ms over {EDITS} edits; server {}",
+        "{label} ({} lines, {} diagnostics): open {:.1} ms; edit to diagnostics median {:.2} ms, p99 {:.2} ms, max {:.2} ms over {EDITS} edits; server CPU {cpu_per_edit} an edit; server {}",
         lines.len(),
         first.len(),
         open_time.as_secs_f64() * 1e3,
