@@ -16,6 +16,12 @@ pub trait FileSource {
     fn read_bytes(&self, name: &str) -> Option<Arc<[u8]>>;
     /// Every name this source can supply, listed in "missing include" errors.
     fn names(&self) -> Vec<String>;
+    /// The syntax tree of `name`'s text when this source already holds one (the language
+    /// server's database does), so that checking and linting need not parse it again.
+    /// `None` lets the caller parse the text [`FileSource::read`] gives.
+    fn parse(&self, _name: &str) -> Option<syntax::Parse> {
+        None
+    }
 }
 
 /// Files held in memory, such as the Typst package's `includes` and `files` dictionaries.

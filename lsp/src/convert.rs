@@ -4,12 +4,11 @@
 use crate::documents::Part;
 use crate::snapshot::Snapshot;
 use analysis::db::{Checked, FilePath};
-use analysis::ide::diagnostics::{Lint, LintKind};
 use syntax::line_index::{LineCol, LineIndex};
 use syntax::{Severity, TextRange, TextSize};
 use tower_lsp_server::ls_types::{
     self as lsp, DiagnosticRelatedInformation, DiagnosticSeverity, DiagnosticTag, Location,
-    Position, Range,
+    NumberOrString, Position, Range,
 };
 
 /// The byte offset of a protocol position, clamped to the text.
@@ -75,19 +74,14 @@ pub fn diagnostics(snapshot: &Snapshot, part: &Part, checked: &Checked) -> Vec<l
                     message: r.message.clone(),
                 })
             }));
-            let mut message = diagnostic.message.clone();
-            for note in &diagnostic.notes {
-                message.push_str("\nnote: ");
-                message.push_str(note);
-            }
             lsp::Diagnostic {
                 range: snapshot.part_range(part, range),
-                severity: Some(match diagnostic.severity {
-                    Severity::Error => DiagnosticSeverity::ERROR,
-                    Severity::Warning => DiagnosticSeverity::WARNING,
-                }),
+                severity: Some(severity(diagnostic.severity)),
+                code: diagnostic
+                    .code
+                    .map(|code| NumberOrString::String(code.to_owned())),
                 source: Some("povrayst".to_owned()),
-                message,
+                message: with_notes(diagnostic),
                 related_information: (!related.is_empty()).then_some(related),
                 ..lsp::Diagnostic::default()
             }
@@ -138,22 +132,54 @@ pub fn internal_error(cause: &str) -> lsp::Diagnostic {
     }
 }
 
-/// Lint findings as hints the editor fades (unused) or strikes through (legacy).
-pub fn lints(snapshot: &Snapshot, part: &Part, lints: Vec<Lint>) -> Vec<lsp::Diagnostic> {
-    lints
-        .into_iter()
-        .map(|lint| lsp::Diagnostic {
-            range: snapshot.part_range(part, lint.range),
-            severity: Some(DiagnosticSeverity::HINT),
-            source: Some("povrayst".to_owned()),
-            message: lint.message,
-            tags: Some(vec![match lint.kind {
-                LintKind::Unused => DiagnosticTag::UNNECESSARY,
-                LintKind::Legacy => DiagnosticTag::DEPRECATED,
-            }]),
-            ..lsp::Diagnostic::default()
+/// The lints of `povrayst check` that lie in the part itself (`main_name` to the linter),
+/// with the same words; the editor fades declarations nothing uses and strikes through
+/// legacy syntax.
+pub fn lints(
+    snapshot: &Snapshot,
+    part: &Part,
+    main_name: &str,
+    warnings: &[syntax::Diagnostic],
+) -> Vec<lsp::Diagnostic> {
+    warnings
+        .iter()
+        .filter(|warning| warning.span.file == main_name)
+        .map(|warning| {
+            let tag = match warning.code {
+                Some(analysis::lint::UNUSED_CODE) => Some(DiagnosticTag::UNNECESSARY),
+                Some(analysis::lint::LEGACY_CODE) => Some(DiagnosticTag::DEPRECATED),
+                _ => None,
+            };
+            lsp::Diagnostic {
+                range: snapshot.part_range(part, warning.span.range),
+                severity: Some(severity(warning.severity)),
+                code: warning
+                    .code
+                    .map(|code| NumberOrString::String(code.to_owned())),
+                source: Some("povrayst".to_owned()),
+                message: with_notes(warning),
+                tags: tag.map(|tag| vec![tag]),
+                ..lsp::Diagnostic::default()
+            }
         })
         .collect()
+}
+
+fn severity(severity: Severity) -> DiagnosticSeverity {
+    match severity {
+        Severity::Error => DiagnosticSeverity::ERROR,
+        Severity::Warning => DiagnosticSeverity::WARNING,
+    }
+}
+
+/// The message with its notes on lines of their own, as `povrayst check` prints them.
+fn with_notes(diagnostic: &syntax::Diagnostic) -> String {
+    let mut message = diagnostic.message.clone();
+    for note in &diagnostic.notes {
+        message.push_str("\nnote: ");
+        message.push_str(note);
+    }
+    message
 }
 
 #[cfg(test)]

@@ -10,8 +10,7 @@ use crate::documents::{DocumentKind, DocumentView, OpenDocument, Part, apply_cha
 use crate::publisher::{Publication, Publisher};
 use crate::snapshot::{Snapshot, World};
 use analysis::EvalOptions;
-use analysis::db::{self, File, FilePath, Project, RootDatabase};
-use analysis::ide::diagnostics::DiagnosticsConfig;
+use analysis::db::{self, File, FilePath, Project, ProjectFiles, RootDatabase};
 use analysis::ide::embedded;
 use salsa::Setter;
 use std::collections::{BTreeMap, HashMap};
@@ -488,11 +487,9 @@ fn publish_diagnostics(snapshot: Snapshot, generation: u64, publisher: &Publishe
                 let lint_db = snapshot.db.clone();
                 let (checked, lints) = std::thread::scope(|scope| {
                     let lints = scope.spawn(move || {
-                        analysis::ide::diagnostics::lints(
-                            &lint_db,
-                            part.file,
-                            &DiagnosticsConfig::default(),
-                        )
+                        let files = ProjectFiles::new(&lint_db, part.file);
+                        let linted = analysis::lint::lint(files.main_name(), &files);
+                        (files.main_name().to_owned(), linted.warnings)
                     });
                     let checked = db::check_file(&snapshot.db, part.file);
                     let lints = lints
@@ -501,7 +498,8 @@ fn publish_diagnostics(snapshot: Snapshot, generation: u64, publisher: &Publishe
                     (checked, lints)
                 });
                 diagnostics.extend(convert::diagnostics(&snapshot, part, checked));
-                diagnostics.extend(convert::lints(&snapshot, part, lints));
+                let (main_name, lints) = lints;
+                diagnostics.extend(convert::lints(&snapshot, part, &main_name, &lints));
                 unloaded.extend(checked.unloaded.iter().cloned());
             }
             (diagnostics, unloaded)

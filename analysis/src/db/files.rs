@@ -152,6 +152,18 @@ impl FileSource for ProjectFiles<'_> {
         }
     }
 
+    fn parse(&self, name: &str) -> Option<syntax::Parse> {
+        let file = if name == self.main_name {
+            self.main
+        } else {
+            match resolve_include(self.db, self.main, name)? {
+                Resolved::File(file) => file,
+                Resolved::OnDisk(_) | Resolved::Bundled(_) => return None,
+            }
+        };
+        Some(crate::db::parse(self.db, file).clone())
+    }
+
     /// The `.inc` files of the scene's directory and the library paths, as the CLI lists
     /// them in "cannot find include file" errors.
     fn names(&self) -> Vec<String> {

@@ -382,7 +382,10 @@ impl<'a> Evaluator<'a> {
         if source.standard {
             return Ok(());
         }
-        let mut errors = crate::syntax_errors(&source.name, &source.text);
+        let mut errors = match self.source.parse(&source.name) {
+            Some(parse) => syntax::syntax_diagnostics(&source.name, &parse),
+            None => crate::syntax_errors(&source.name, &source.text),
+        };
         if errors.is_empty() {
             return Ok(());
         }

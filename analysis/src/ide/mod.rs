@@ -5,7 +5,6 @@
 pub mod classify;
 pub mod code_actions;
 pub mod completion;
-pub mod diagnostics;
 pub mod document_colours;
 pub mod document_links;
 pub mod document_symbols;

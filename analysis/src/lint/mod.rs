@@ -25,6 +25,11 @@ pub const CODES: [&str; 4] = [
     unknown_keyword::CODE,
 ];
 
+/// The code of the lint for declarations nothing uses, which editors show faded.
+pub const UNUSED_CODE: &str = unused::CODE;
+/// The code of the lint for legacy syntax, which editors show struck through.
+pub const LEGACY_CODE: &str = legacy::CODE;
+
 /// What [`lint`] found, with the texts of the files it read so that the warnings can be
 /// rendered even where an evaluation stopped before reading them.
 #[derive(Debug, Clone)]

@@ -90,7 +90,8 @@ impl Workspace {
                     None => continue,
                 },
             };
-            let facts = FileFacts::new(name, origin, text);
+            let parsed = source.parse(&name);
+            let facts = FileFacts::new(name, origin, text, parsed);
             // Reversed, so that the first include is looked at first.
             for include in facts.includes.iter().rev() {
                 let origin = if origin == Origin::Standard {
@@ -137,11 +138,17 @@ impl FileFacts {
             .any(|ext| lower.ends_with(ext))
     }
 
-    pub fn new(name: String, origin: Origin, text: Arc<str>) -> FileFacts {
+    /// The facts of `name`, from `parsed` when the caller already holds its tree.
+    pub fn new(
+        name: String,
+        origin: Origin,
+        text: Arc<str>,
+        parsed: Option<syntax::Parse>,
+    ) -> FileFacts {
         let (root, facts) = if origin == Origin::Standard {
             (None, standard_facts(&name, &text))
         } else {
-            let root = syntax::parse(&text).syntax_node();
+            let root = parsed.unwrap_or_else(|| syntax::parse(&text)).syntax_node();
             let facts = NameFacts::of(&root);
             (Some(root), Arc::new(facts))
         };
