@@ -78,7 +78,12 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
     // Scenes without `#version 3.7` keep POV-Ray 3.6's rules: with alpha output the
     // background is fully transparent black whatever its colour.
     let legacy = scene.version.is_none_or(|v| v < 3.7);
-    let background_colour = scene.background.unwrap_or_default();
+    // A scene without `background` has POV-Ray's default, black with transmit 1: black in
+    // the picture, transparent in an alpha channel.
+    let background_colour = scene.background.unwrap_or(scene::Colour {
+        transmit: 1.0,
+        ..scene::Colour::BLACK
+    });
     let background = match (settings.output_alpha, legacy) {
         (false, _) => Sample::new(background_colour.rgb, 0.0),
         (true, true) => Sample::new(DVec3::ZERO, 1.0),
@@ -480,4 +485,40 @@ fn axis_frame(base: DVec3, cap: DVec3, radius: f64) -> Option<DAffine3> {
         DMat3::from_cols(u * radius, v * radius, axis),
         base,
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::RenderOptions;
+    use crate::pipeline::render_source;
+    use analysis::MemoryFiles;
+
+    /// The corner pixel of a 3.7 scene that has a camera and nothing else.
+    fn corner(background: &str, output_alpha: bool) -> [f32; 4] {
+        let scene = format!("#version 3.7;\ncamera {{ location -5*z look_at 0 }}\n{background}");
+        let files = MemoryFiles::new().with("scene.pov", scene);
+        let options = RenderOptions {
+            width: 4,
+            height: 3,
+            output_alpha,
+            ..RenderOptions::default()
+        };
+        let rendered = render_source("scene.pov", &files, &options).unwrap();
+        rendered.image.pixel(0, 0)
+    }
+
+    fn assert_near(found: [f32; 4], expected: [f32; 4]) {
+        let close = found
+            .iter()
+            .zip(expected)
+            .all(|(f, e)| (f - e).abs() < 1e-6);
+        assert!(close, "{found:?} is not {expected:?}");
+    }
+
+    #[test]
+    fn the_default_background_is_transparent_black() {
+        assert_near(corner("", true), [0.0, 0.0, 0.0, 0.0]);
+        assert_near(corner("", false), [0.0, 0.0, 0.0, 1.0]);
+        assert_near(corner("background { rgb 1 }", true), [1.0, 1.0, 1.0, 1.0]);
+    }
 }
