@@ -211,6 +211,7 @@ impl Evaluator<'_> {
             filter: PaletteAmounts::default(),
             transmit: PaletteAmounts::default(),
             transform: Transform::IDENTITY,
+            uv_mapping: false,
         };
         loop {
             let token = self.next()?;

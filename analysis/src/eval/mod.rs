@@ -6,6 +6,7 @@
 //! before it.
 
 mod atmosphere;
+mod bicubic_patch;
 mod bitmap;
 mod builtins;
 mod camera;
@@ -17,13 +18,16 @@ mod file_io;
 mod function_body;
 mod height_field;
 mod light;
+mod light_group;
 mod macros;
 mod math_shapes;
 mod media;
+mod mesh;
 mod normal_map;
 mod object;
 mod pattern_head;
 mod photons;
+mod polygon;
 mod rng;
 mod scene_items;
 mod spline;

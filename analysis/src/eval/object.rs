@@ -2,6 +2,7 @@
 //! object takes (transformations, textures, flags, clipping and bounding).
 
 use super::math_shapes::MATH_SHAPES;
+use super::texture::{map_texture_uv, place_texture};
 use super::tokens::Token;
 use super::value::{MaterialValue, Value};
 use super::{Evaluator, Result};
@@ -9,15 +10,6 @@ use crate::scene::{CsgOp, Light, Object, Shape, Texture, Transform};
 use glam::DVec3;
 use std::sync::Arc;
 use syntax::SyntaxKind::{self, *};
-
-/// Shapes we parse the name of but cannot draw yet; they fail with a located error.
-const UNSUPPORTED_SHAPES: &[SyntaxKind] = &[
-    BICUBIC_PATCH_KW,
-    LIGHT_GROUP_KW,
-    MESH_KW,
-    MESH2_KW,
-    POLYGON_KW,
-];
 
 impl Evaluator<'_> {
     /// Whether `kind` starts an object statement.
@@ -33,6 +25,11 @@ impl Evaluator<'_> {
                 | DISC_KW
                 | TRIANGLE_KW
                 | SMOOTH_TRIANGLE_KW
+                | MESH_KW
+                | MESH2_KW
+                | POLYGON_KW
+                | BICUBIC_PATCH_KW
+                | LIGHT_GROUP_KW
                 | QUADRIC_KW
                 | UNION_KW
                 | INTERSECTION_KW
@@ -40,8 +37,7 @@ impl Evaluator<'_> {
                 | MERGE_KW
                 | OBJECT_KW
                 | TEXT_KW
-        ) || UNSUPPORTED_SHAPES.contains(&kind)
-            || MATH_SHAPES.contains(&kind)
+        ) || MATH_SHAPES.contains(&kind)
     }
 
     /// One object statement, from its keyword to its closing brace.
@@ -165,27 +161,18 @@ impl Evaluator<'_> {
                     origin,
                 )
             }
-            TRIANGLE_KW => {
-                let a = self.vector()?;
-                self.eat(COMMA)?;
-                let b = self.vector()?;
-                self.eat(COMMA)?;
-                let c = self.vector()?;
-                Object::new(Shape::Triangle { corners: [a, b, c] }, origin)
+            TRIANGLE_KW | SMOOTH_TRIANGLE_KW => {
+                let shape = match self.triangle_corners(keyword.kind)? {
+                    (corners, Some(normals)) => Shape::SmoothTriangle { corners, normals },
+                    (corners, None) => Shape::Triangle { corners },
+                };
+                Object::new(shape, origin)
             }
-            SMOOTH_TRIANGLE_KW => {
-                let mut corners = [DVec3::ZERO; 3];
-                let mut normals = [DVec3::ZERO; 3];
-                for i in 0..3 {
-                    if i > 0 {
-                        self.eat(COMMA)?;
-                    }
-                    corners[i] = self.vector()?;
-                    self.eat(COMMA)?;
-                    normals[i] = self.vector()?;
-                }
-                Object::new(Shape::SmoothTriangle { corners, normals }, origin)
-            }
+            MESH_KW => Object::new(self.mesh(&keyword)?, origin),
+            MESH2_KW => Object::new(self.mesh2(&keyword)?, origin),
+            POLYGON_KW => Object::new(self.polygon(&keyword)?, origin),
+            BICUBIC_PATCH_KW => Object::new(self.bicubic_patch(&keyword)?, origin),
+            LIGHT_GROUP_KW => self.light_group(origin)?,
             UNION_KW | MERGE_KW | INTERSECTION_KW | DIFFERENCE_KW => {
                 let op = match keyword.kind {
                     UNION_KW => CsgOp::Union,
@@ -224,9 +211,6 @@ impl Evaluator<'_> {
             }
             kind if MATH_SHAPES.contains(&kind) => Object::new(self.math_shape(&keyword)?, origin),
             TEXT_KW => Object::new(self.text_shape(&keyword)?, origin),
-            kind if UNSUPPORTED_SHAPES.contains(&kind) => {
-                return Err(self.unsupported(&keyword, self.text(&keyword)));
-            }
             _ => {
                 return Err(self.error_at(
                     &keyword,
@@ -234,7 +218,10 @@ impl Evaluator<'_> {
                 ));
             }
         };
-        self.object_modifiers(&mut object, &keyword)?;
+        // A light group reads its own transformations and takes no other modifiers.
+        if keyword.kind != LIGHT_GROUP_KW {
+            self.object_modifiers(&mut object, &keyword)?;
+        }
         let close = self.next()?;
         if close.kind != R_BRACE {
             let mut error = self.error_at(
@@ -252,6 +239,28 @@ impl Evaluator<'_> {
             return Err(error);
         }
         Ok(object)
+    }
+
+    /// The corners of a `triangle`, or the corners and normals of a `smooth_triangle`
+    /// (whose keyword is `kind`), as they follow its opening brace.
+    pub(super) fn triangle_corners(
+        &mut self,
+        kind: SyntaxKind,
+    ) -> Result<([DVec3; 3], Option<[DVec3; 3]>)> {
+        let smooth = kind == SMOOTH_TRIANGLE_KW;
+        let mut corners = [DVec3::ZERO; 3];
+        let mut normals = [DVec3::ZERO; 3];
+        for i in 0..3 {
+            if i > 0 {
+                self.eat(COMMA)?;
+            }
+            corners[i] = self.vector()?;
+            if smooth {
+                self.eat(COMMA)?;
+                normals[i] = self.vector()?;
+            }
+        }
+        Ok((corners, smooth.then_some(normals)))
     }
 
     fn csg_children(&mut self, op: CsgOp, origin: crate::scene::Origin) -> Result<Object> {
@@ -285,6 +294,8 @@ impl Evaluator<'_> {
         // `bounded_by { clipped_by }` and `clipped_by { bounded_by }` take the other list
         // as it stands when the object ends, whichever comes first.
         let (mut bounds_are_clips, mut clips_are_bounds) = (false, false);
+        // `uv_mapping` maps the textures, pigments and normals that follow it.
+        let mut uv_mapping = false;
         loop {
             let token = self.next()?;
             match token.kind {
@@ -293,13 +304,40 @@ impl Evaluator<'_> {
                     transform_object(object, &t);
                 }
                 TEXTURE_KW => {
-                    let texture = self.texture_body()?;
+                    let mut texture = self.texture_body()?;
+                    if uv_mapping {
+                        map_texture_uv(&mut texture);
+                    }
                     object.texture = Some(Arc::new(match object.texture.take() {
                         Some(below) => layer(Texture::clone(&below), texture),
                         None => texture,
                     }));
                 }
-                PIGMENT_KW | NORMAL_KW | FINISH_KW => self.texture_part(object, &token)?,
+                PIGMENT_KW | NORMAL_KW | FINISH_KW => {
+                    self.texture_part(object, &token)?;
+                    if let (true, Some(texture)) = (uv_mapping, &mut object.texture) {
+                        map_texture_uv(Arc::make_mut(texture));
+                    }
+                }
+                UV_MAPPING_KW => {
+                    if object.texture.is_some() {
+                        return Err(self.error_at(
+                            &token,
+                            "uv_mapping must come before the object's texture, pigment and normal",
+                        ));
+                    }
+                    uv_mapping = true;
+                }
+                HIERARCHY_KW => {
+                    let on = self.optional_bool()?;
+                    let Shape::Mesh(mesh) = &mut object.shape else {
+                        return Err(self.error_at(
+                            &token,
+                            format!("'hierarchy' does not apply to {}", self.text(keyword)),
+                        ));
+                    };
+                    mesh.hierarchy = on;
+                }
                 INTERIOR_KW => {
                     let interior = self.interior_body()?;
                     object.interior = Some(Arc::new(interior));
@@ -356,7 +394,7 @@ impl Evaluator<'_> {
                 }
                 RADIOSITY_KW => self.skip_braced_block(&token)?,
                 SPLIT_UNION_KW => object.photons.split_union = self.optional_bool()?,
-                CUTAWAY_TEXTURES_KW | UV_MAPPING_KW => {}
+                CUTAWAY_TEXTURES_KW => {}
                 _ => {
                     self.unget(token);
                     if bounds_are_clips {
@@ -552,7 +590,8 @@ pub fn layer(below: Texture, top: Texture) -> Texture {
     Texture::Layered(layers)
 }
 
-fn collect_lights(object: &mut Object, lights: &mut Vec<Light>) {
+/// Moves the lights of CSG objects into `lights`. A light group keeps its own.
+pub(super) fn collect_lights(object: &mut Object, lights: &mut Vec<Light>) {
     if let Shape::Csg {
         children,
         lights: inner,
@@ -588,13 +627,27 @@ pub fn transform_object(object: &mut Object, t: &Transform) {
                 }
             }
         }
+        Shape::LightGroup(group) => {
+            for child in &mut group.objects {
+                transform_object(child, t);
+            }
+            for light in &mut group.lights {
+                super::light::transform_light(light, t);
+            }
+        }
+        Shape::Mesh(mesh) => {
+            object.transform = object.transform.then(t);
+            for texture in &mut mesh.textures {
+                place_texture(Arc::make_mut(texture), t);
+            }
+        }
         _ => object.transform = object.transform.then(t),
     }
     if let Some(texture) = &mut object.texture {
-        super::texture::transform_texture(Arc::make_mut(texture), t);
+        place_texture(Arc::make_mut(texture), t);
     }
     if let Some(texture) = &mut object.interior_texture {
-        super::texture::transform_texture(Arc::make_mut(texture), t);
+        place_texture(Arc::make_mut(texture), t);
     }
     for clip in object
         .clipped_by
@@ -614,9 +667,17 @@ pub fn inherit_texture(object: &mut Object, inherited: &Arc<Texture>) {
         .texture
         .get_or_insert_with(|| inherited.clone())
         .clone();
-    if let Shape::Csg { children, .. } = &mut object.shape {
-        for child in children {
-            inherit_texture(child, &texture);
+    match &mut object.shape {
+        Shape::Csg { children, .. } => {
+            for child in children {
+                inherit_texture(child, &texture);
+            }
         }
+        Shape::LightGroup(group) => {
+            for child in &mut group.objects {
+                inherit_texture(child, &texture);
+            }
+        }
+        _ => {}
     }
 }

@@ -30,8 +30,12 @@ impl Evaluator<'_> {
     /// `{ ... }` after `texture`.
     pub fn texture_body(&mut self) -> Result<Texture> {
         self.expect(L_BRACE, "'{'")?;
-        let texture = self.texture_inner(R_BRACE)?;
+        let uv_mapping = self.eat(UV_MAPPING_KW)?;
+        let mut texture = self.texture_inner(R_BRACE)?;
         self.expect(R_BRACE, "'}'")?;
+        if uv_mapping {
+            map_texture_uv(&mut texture);
+        }
         Ok(texture)
     }
 
@@ -242,8 +246,12 @@ impl Evaluator<'_> {
     /// `{ ... }` after `pigment`, modifying `base` (an object's current pigment).
     pub fn pigment_with(&mut self, base: Option<Pigment>) -> Result<Pigment> {
         self.expect(L_BRACE, "'{'")?;
-        let pigment = self.pigment_inner(base, R_BRACE)?;
+        let uv_mapping = self.eat(UV_MAPPING_KW)?;
+        let mut pigment = self.pigment_inner(base, R_BRACE)?;
         self.expect(R_BRACE, "'}'")?;
+        if uv_mapping {
+            map_pigment_uv(&mut pigment);
+        }
         Ok(pigment)
     }
 
@@ -762,8 +770,12 @@ impl Evaluator<'_> {
     /// (`normal { bump_size 2 }` on a plain surface), which perturbs nothing.
     pub fn normal_with(&mut self, base: Option<Normal>) -> Result<Option<Normal>> {
         self.expect(L_BRACE, "'{'")?;
-        let normal = self.normal_inner(base, R_BRACE)?;
+        let uv_mapping = self.eat(UV_MAPPING_KW)?;
+        let mut normal = self.normal_inner(base, R_BRACE)?;
         self.expect(R_BRACE, "'}'")?;
+        if let (true, Some(normal)) = (uv_mapping, &mut normal) {
+            map_normal_uv(normal);
+        }
         Ok(normal)
     }
 
@@ -839,7 +851,7 @@ impl Evaluator<'_> {
             if Self::starts_transform(token.kind) {
                 let t = self.transformation(&token)?;
                 if let Some(normal) = &mut normal {
-                    transform_normal(normal, &t);
+                    move_normal(normal, &t, Reach::Every);
                 }
                 continue;
             }
@@ -1233,54 +1245,132 @@ fn default_map(kind: &PatternKind) -> BlendMap<Pigment> {
     }
 }
 
-/// Applies an object's transformation to a texture's patterns, recursively.
+/// Which patterns a transformation moves.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Reach {
+    /// A transformation written in a texture, pigment or normal moves all its patterns.
+    Every,
+    /// An object's transformation leaves uv-mapped patterns where they are on its surface.
+    InSpace,
+}
+
+/// Applies a transformation written in a texture to its patterns, recursively.
 pub fn transform_texture(texture: &mut Texture, t: &Transform) {
+    move_texture(texture, t, Reach::Every);
+}
+
+/// Applies an object's transformation to its texture's patterns, recursively, except the
+/// uv-mapped ones, which stay glued to the surface.
+pub fn place_texture(texture: &mut Texture, t: &Transform) {
+    move_texture(texture, t, Reach::InSpace);
+}
+
+/// Applies a transformation written in a pigment (or a media's density) to its patterns.
+pub(super) fn transform_pigment(pigment: &mut Pigment, t: &Transform) {
+    move_pigment(pigment, t, Reach::Every);
+}
+
+fn moves(pattern: &Pattern, reach: Reach) -> bool {
+    reach == Reach::Every || !pattern.uv_mapping
+}
+
+fn move_texture(texture: &mut Texture, t: &Transform, reach: Reach) {
     match texture {
         Texture::Plain {
             pigment, normal, ..
         } => {
-            transform_pigment(pigment, t);
+            move_pigment(pigment, t, reach);
             if let Some(normal) = normal {
-                transform_normal(normal, t);
+                move_normal(normal, t, reach);
             }
         }
         Texture::Pattern { pattern, map } => {
+            if !moves(pattern, reach) {
+                return;
+            }
             pattern.transform = pattern.transform.then(t);
             for (_, entry) in &mut map.entries {
-                transform_texture(entry, t);
+                move_texture(entry, t, reach);
             }
         }
         Texture::Layered(layers) => {
             for layer in layers {
-                transform_texture(layer, t);
+                move_texture(layer, t, reach);
             }
         }
     }
 }
 
-pub(super) fn transform_pigment(pigment: &mut Pigment, t: &Transform) {
+fn move_pigment(pigment: &mut Pigment, t: &Transform, reach: Reach) {
     match pigment {
         Pigment::Pattern { pattern, map } => {
+            if !moves(pattern, reach) {
+                return;
+            }
             pattern.transform = pattern.transform.then(t);
             for (_, entry) in &mut map.entries {
-                transform_pigment(entry, t);
+                move_pigment(entry, t, reach);
             }
         }
-        Pigment::Image(map) => map.transform = map.transform.then(t),
+        Pigment::Image(map) => {
+            if reach == Reach::Every || !map.uv_mapping {
+                map.transform = map.transform.then(t);
+            }
+        }
         Pigment::Solid(_) => {}
     }
 }
 
-fn transform_normal(normal: &mut Normal, t: &Transform) {
+fn move_normal(normal: &mut Normal, t: &Transform, reach: Reach) {
     match &mut normal.kind {
         NormalKind::Pattern { pattern, .. } | NormalKind::BumpMap { pattern, .. } => {
-            pattern.transform = pattern.transform.then(t);
-        }
-        NormalKind::Map { pattern, map } => {
-            pattern.transform = pattern.transform.then(t);
-            for (_, entry) in &mut map.entries {
-                transform_normal(entry, t);
+            if moves(pattern, reach) {
+                pattern.transform = pattern.transform.then(t);
             }
         }
+        NormalKind::Map { pattern, map } => {
+            if !moves(pattern, reach) {
+                return;
+            }
+            pattern.transform = pattern.transform.then(t);
+            for (_, entry) in &mut map.entries {
+                move_normal(entry, t, reach);
+            }
+        }
+    }
+}
+
+/// Marks a texture's patterns `uv_mapping`, as `uv_mapping` before its items asks.
+pub fn map_texture_uv(texture: &mut Texture) {
+    match texture {
+        Texture::Plain {
+            pigment, normal, ..
+        } => {
+            map_pigment_uv(pigment);
+            if let Some(normal) = normal {
+                map_normal_uv(normal);
+            }
+        }
+        Texture::Pattern { pattern, .. } => pattern.uv_mapping = true,
+        Texture::Layered(layers) => layers.iter_mut().for_each(map_texture_uv),
+    }
+}
+
+/// Marks a pigment's pattern or image `uv_mapping`; its map entries are evaluated at the
+/// same uv point. A plain colour has nothing to map.
+pub fn map_pigment_uv(pigment: &mut Pigment) {
+    match pigment {
+        Pigment::Pattern { pattern, .. } => pattern.uv_mapping = true,
+        Pigment::Image(map) => map.uv_mapping = true,
+        Pigment::Solid(_) => {}
+    }
+}
+
+/// Marks a normal's pattern `uv_mapping`.
+pub fn map_normal_uv(normal: &mut Normal) {
+    match &mut normal.kind {
+        NormalKind::Pattern { pattern, .. }
+        | NormalKind::BumpMap { pattern, .. }
+        | NormalKind::Map { pattern, .. } => pattern.uv_mapping = true,
     }
 }

@@ -2,6 +2,7 @@
 //! evaluate at parse time too (`function { pattern { object { } } }`), so the test works
 //! on the scene description itself rather than on the renderer's runtime shapes.
 
+use crate::scene::mesh::MeshGeometry;
 use crate::scene::{CsgOp, Object, Shape};
 use glam::DVec3;
 
@@ -17,8 +18,12 @@ pub fn check(object: &Object) -> Result<(), String> {
         | Shape::Torus { .. }
         | Shape::Quadric { .. }
         | Shape::Triangle { .. }
-        | Shape::SmoothTriangle { .. } => Ok(()),
+        | Shape::SmoothTriangle { .. }
+        | Shape::Mesh(_)
+        | Shape::Polygon(_)
+        | Shape::BicubicPatch(_) => Ok(()),
         Shape::Csg { children, .. } => children.iter().try_for_each(check),
+        Shape::LightGroup(group) => group.objects.iter().try_for_each(check),
         #[allow(unreachable_patterns)]
         _ => Err("not supported yet: this shape in the object pattern".into()),
     }
@@ -74,6 +79,10 @@ pub fn inside(object: &Object, p: DVec3) -> bool {
                 + constant;
             value < 0.0
         }
+        Shape::Mesh(mesh) => mesh
+            .inside_vector
+            .is_some_and(|direction| odd_crossings(&mesh.geometry, local, direction)),
+        Shape::LightGroup(group) => group.objects.iter().any(|c| inside(c, local)),
         Shape::Csg { op, children, .. } => match op {
             CsgOp::Union | CsgOp::Merge => children.iter().any(|c| inside(c, local)),
             CsgOp::Intersection => children.iter().all(|c| inside(c, local)),
@@ -87,6 +96,32 @@ pub fn inside(object: &Object, p: DVec3) -> bool {
         _ => false,
     };
     within != object.flags.inverse
+}
+
+/// Whether the ray from `p` along `direction` crosses the mesh's triangles an odd number
+/// of times, POV-Ray's test for the inside of a mesh with an `inside_vector`. Every triangle
+/// is tried: the scene description has no acceleration structure, and the object pattern
+/// rarely meets large meshes.
+fn odd_crossings(mesh: &MeshGeometry, p: DVec3, direction: DVec3) -> bool {
+    let mut odd = false;
+    for face in &mesh.faces {
+        let [a, b, c] = face.vertices.map(|i| mesh.vertices[i as usize]);
+        let (e1, e2) = (b - a, c - a);
+        let pv = direction.cross(e2);
+        let det = e1.dot(pv);
+        if det == 0.0 {
+            continue;
+        }
+        let tv = p - a;
+        let u = tv.dot(pv) / det;
+        let qv = tv.cross(e1);
+        let v = direction.dot(qv) / det;
+        let t = e2.dot(qv) / det;
+        if u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > 0.0 {
+            odd = !odd;
+        }
+    }
+    odd
 }
 
 #[cfg(test)]

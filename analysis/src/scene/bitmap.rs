@@ -75,6 +75,9 @@ pub struct ImageMap {
     pub transmit: PaletteAmounts,
     /// From the image's pattern space to the world.
     pub transform: Transform,
+    /// `uv_mapping`: the image is looked up at the surface's (u, v, 0), and the object's
+    /// transformations do not move it.
+    pub uv_mapping: bool,
 }
 
 /// What a bump map or image pattern reads from a pixel.

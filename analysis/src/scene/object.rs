@@ -2,7 +2,8 @@ use super::math_shapes::{
     Blob, HeightField, Isosurface, JuliaFractal, Lathe, Lemon, Parametric, Polynomial, Prism, Sor,
     SphereSweep, Text,
 };
-use super::{Colour, Light, Media, ObjectPhotons, Origin, Texture, Transform};
+use super::mesh::{BicubicPatch, Mesh, Polygon};
+use super::{Colour, Light, LightGroup, Media, ObjectPhotons, Origin, Texture, Transform};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -71,6 +72,10 @@ pub enum Shape {
         corners: [DVec3; 3],
         normals: [DVec3; 3],
     },
+    /// `mesh` and `mesh2`.
+    Mesh(Box<Mesh>),
+    Polygon(Box<Polygon>),
+    BicubicPatch(Box<BicubicPatch>),
     /// `poly`, `cubic`, `quartic` and `polynomial`.
     Polynomial(Box<Polynomial>),
     Isosurface(Box<Isosurface>),
@@ -101,6 +106,8 @@ pub enum Shape {
         children: Vec<Object>,
         lights: Vec<Light>,
     },
+    /// A union whose lights shine on its own objects only.
+    LightGroup(Box<LightGroup>),
 }
 
 /// The yes/no modifiers of an object.

@@ -168,6 +168,9 @@ pub struct Pattern {
     pub warps: Vec<Warp>,
     pub transform: Transform,
     pub noise_generator: u8,
+    /// `uv_mapping`: the pattern is evaluated at the surface's (u, v, 0) instead of the
+    /// point in space, and the object's transformations do not move it.
+    pub uv_mapping: bool,
 }
 
 impl Pattern {
@@ -181,6 +184,7 @@ impl Pattern {
             warps: Vec::new(),
             transform: Transform::IDENTITY,
             noise_generator: 2,
+            uv_mapping: false,
         }
     }
 }
