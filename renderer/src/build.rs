@@ -9,11 +9,14 @@ use crate::interior::Interior;
 use crate::light::Light;
 use crate::material::{Material, Surface};
 use crate::object::{Csg, CsgKind, Leaf, Object, Visibility};
+use crate::shapes::bicubic_patch;
+use crate::shapes::mesh::{Hierarchy, MeshData};
 use crate::shapes::{
-    Cone, Cuboid, Cylinder, Disc, Plane, Shape, ShapeReport, Sphere, Torus, Triangle,
-    build_math_shape,
+    Cone, Cuboid, Cylinder, Disc, Mesh, Plane, Polygon, Shape, ShapeReport, Sphere, Torus,
+    Triangle, build_math_shape,
 };
 use crate::tracer::{Quality, World};
+use analysis::scene::mesh::MeshGeometry;
 use analysis::scene::{self, CsgOp, Origin, Scene};
 use glam::{DAffine3, DMat3, DVec3};
 use std::collections::HashMap;
@@ -51,6 +54,10 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
         has_media: false,
         // POV-Ray computes media from quality 9 on.
         with_media: settings.quality >= 9,
+        meshes: HashMap::new(),
+        light_groups: Vec::new(),
+        light_set: 0,
+        outer_global_lights: None,
     };
     for light in &scene.lights {
         builder.add_light(light)?;
@@ -69,6 +76,16 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
             message,
             origin: None,
         })?;
+    // Light groups' lights would have to shine only on the media of their own objects.
+    let media = builder.has_media || atmosphere.as_ref().is_some_and(|a| !a.media.is_empty());
+    if let Some(group) = builder.light_groups.iter().find(|g| !g.lights.is_empty())
+        && media
+    {
+        return Err(BuildError {
+            message: "not supported yet: light groups in a scene with media".into(),
+            origin: group.origin.clone(),
+        });
+    }
     let camera_interiors = if builder.has_media || atmosphere.is_some() {
         camera_interiors(&objects, scene.camera.location)
     } else {
@@ -107,9 +124,11 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
         }
         None => None,
     };
+    let light_sets = builder.light_sets();
     Ok(World {
         bvh,
         lights: builder.lights,
+        light_sets,
         background,
         reflected_background: background_colour.rgb,
         ambient_light: scene.settings.ambient_light.rgb,
@@ -173,16 +192,117 @@ struct Builder {
     /// Whether some interior has media, so that rays must look for them.
     has_media: bool,
     with_media: bool,
+    /// Mesh data by the scene geometry it came from and its hierarchy setting, so that
+    /// copies of a mesh share their triangles and hierarchy.
+    meshes: HashMap<(*const MeshGeometry, Hierarchy), Arc<MeshData>>,
+    /// The light groups met so far: light set `i + 1` is group `i`'s.
+    light_groups: Vec<LightGroupLights>,
+    /// The light set of the objects being built.
+    light_set: u32,
+    /// Inside a light group, whether the outermost group lets the scene's lights in.
+    outer_global_lights: Option<bool>,
+}
+
+/// The lights of one light group, and whether the scene's lights shine on its objects too.
+struct LightGroupLights {
+    lights: Vec<u32>,
+    global_lights: bool,
+    origin: Origin,
 }
 
 impl Builder {
-    fn add_light(&mut self, light: &scene::Light) -> Result<(), BuildError> {
+    /// Adds a light to the world; returns its index.
+    fn add_light(&mut self, light: &scene::Light) -> Result<u32, BuildError> {
         let built = Light::from_scene(light).map_err(|message| BuildError {
             message,
             origin: light.origin.clone(),
         })?;
         self.lights.push(built);
-        Ok(())
+        Ok((self.lights.len() - 1) as u32)
+    }
+
+    /// The light sets of the world: the scene's lights (every light outside light
+    /// groups), then each group's.
+    fn light_sets(&self) -> Vec<Vec<u32>> {
+        let mut grouped = vec![false; self.lights.len()];
+        for group in &self.light_groups {
+            for &i in &group.lights {
+                grouped[i as usize] = true;
+            }
+        }
+        let global: Vec<u32> = (0..self.lights.len() as u32)
+            .filter(|&i| !grouped[i as usize])
+            .collect();
+        let mut sets = vec![global.clone()];
+        for group in &self.light_groups {
+            let mut set = group.lights.clone();
+            if group.global_lights {
+                set.extend_from_slice(&global);
+            }
+            sets.push(set);
+        }
+        sets
+    }
+
+    /// The runtime object of a light group: a union of its objects, which get the
+    /// group's lights. As in POV-Ray's pictures, an object in nested light groups is lit
+    /// by the innermost group's lights only, and by the scene's lights when the outermost
+    /// group says `global_lights`.
+    fn light_group(
+        &mut self,
+        group: &scene::LightGroup,
+        origin: &Origin,
+        texture: Option<&Arc<scene::Texture>>,
+        interior: &Arc<Interior>,
+        visibility: Visibility,
+        double: bool,
+    ) -> Result<Option<Object>, BuildError> {
+        let mut lights = Vec::with_capacity(group.lights.len());
+        for light in &group.lights {
+            lights.push(self.add_light(light)?);
+        }
+        let global_lights = self.outer_global_lights.unwrap_or(group.global_lights);
+        self.light_groups.push(LightGroupLights {
+            lights,
+            global_lights,
+            origin: origin.clone(),
+        });
+        let outer = (self.light_set, self.outer_global_lights);
+        self.light_set = self.light_groups.len() as u32;
+        self.outer_global_lights = Some(global_lights);
+        let mut built = Vec::with_capacity(group.objects.len());
+        for child in &group.objects {
+            built.extend(self.object(child, texture, Some(interior), visibility, double)?);
+        }
+        (self.light_set, self.outer_global_lights) = outer;
+        Ok(match built.len() {
+            0 => None,
+            1 => built.pop(),
+            _ => Some(Object::Csg(Csg::new(CsgKind::Union, built))),
+        })
+    }
+
+    /// The shared runtime data of a scene mesh.
+    fn mesh_data(&mut self, mesh: &scene::mesh::Mesh) -> Arc<MeshData> {
+        let hierarchy = if mesh.hierarchy {
+            Hierarchy::On
+        } else {
+            Hierarchy::Off
+        };
+        let key = (Arc::as_ptr(&mesh.geometry), hierarchy);
+        self.meshes
+            .entry(key)
+            .or_insert_with(|| {
+                let g = &mesh.geometry;
+                Arc::new(MeshData::new(
+                    g.vertices.clone(),
+                    g.normals.clone(),
+                    g.uvs.clone(),
+                    g.faces.clone(),
+                    hierarchy,
+                ))
+            })
+            .clone()
     }
 
     fn material(
@@ -289,6 +409,38 @@ impl Builder {
                     origin: object.origin.clone(),
                 });
             }
+            scene::Shape::LightGroup(group) => {
+                let double = flags.double_illuminate || inherited_double;
+                return self.light_group(
+                    group,
+                    &object.origin,
+                    texture,
+                    &interior,
+                    visibility,
+                    double,
+                );
+            }
+            scene::Shape::Mesh(mesh) => (
+                Shape::Mesh(Mesh {
+                    data: self.mesh_data(mesh),
+                    inside_vector: mesh.inside_vector,
+                }),
+                DAffine3::IDENTITY,
+            ),
+            scene::Shape::BicubicPatch(patch) => match bicubic_patch::tessellate(patch) {
+                Some(data) => (
+                    Shape::Mesh(Mesh {
+                        data: Arc::new(data),
+                        inside_vector: None,
+                    }),
+                    DAffine3::IDENTITY,
+                ),
+                None => return Ok(None),
+            },
+            scene::Shape::Polygon(polygon) => match Polygon::new(&polygon.outlines) {
+                Some((shape, frame)) => (Shape::Polygon(shape), frame),
+                None => return Ok(None),
+            },
             scene::Shape::Csg {
                 op,
                 children,
@@ -425,7 +577,7 @@ impl Builder {
             scene::Shape::SmoothTriangle { corners, normals } => (
                 Shape::Triangle(Triangle {
                     corners: *corners,
-                    normals: Some(normals.map(|n| n.normalize_or_zero())),
+                    normals: Some(Box::new(normals.map(|n| n.normalize_or_zero()))),
                 }),
                 DAffine3::IDENTITY,
             ),
@@ -455,6 +607,7 @@ impl Builder {
             };
             material = Arc::new(Material {
                 transmits: surface.may_transmit(),
+                uses_uv: surface.uses_uv(),
                 surface,
             });
         }
@@ -467,6 +620,17 @@ impl Builder {
             visibility,
         );
         leaf.double_illuminate = flags.double_illuminate || inherited_double;
+        leaf.light_set = self.light_set;
+        if let scene::Shape::Mesh(mesh) = &object.shape
+            && !mesh.textures.is_empty()
+        {
+            let materials = mesh
+                .textures
+                .iter()
+                .map(|t| self.material(Some(t), &object.origin))
+                .collect::<Result<Vec<_>, _>>()?;
+            leaf.set_face_materials(materials);
+        }
         Ok(Some(Object::Leaf(leaf)))
     }
 }

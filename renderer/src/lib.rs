@@ -26,7 +26,9 @@ mod ray;
 mod render;
 mod sampling;
 mod shapes;
+mod statistics;
 mod sturm;
+mod texture_point;
 mod tracer;
 
 pub use build::BuildError;
@@ -35,3 +37,4 @@ pub use image::Image;
 pub use options::{Extent, Gamma, RenderOptions};
 pub use png_output::encode_png;
 pub use render::render;
+pub use statistics::{WorldStatistics, world_statistics};

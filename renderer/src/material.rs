@@ -3,6 +3,7 @@
 //! point. Features not implemented yet are refused when
 //! the material is built, with a message naming them, rather than drawn wrongly.
 
+use crate::texture_point::TexturePoint;
 use analysis::pattern::{self, PatternValue, bitmap};
 use analysis::scene::bitmap::ImageMap;
 use analysis::scene::{self, Colour, Finish};
@@ -48,6 +49,8 @@ pub struct Material {
     pub surface: Surface,
     /// Whether light can pass at some point, so that shadow rays must look at the colour.
     pub transmits: bool,
+    /// Whether some pattern is `uv_mapping`, so that hits must find their uv coordinates.
+    pub uses_uv: bool,
 }
 
 /// Where a pattern value falls in a map: the entries either side and the weight of the
@@ -74,59 +77,51 @@ fn locate<T>(map: &[(f64, T)], value: PatternValue) -> (usize, usize, f64) {
 }
 
 impl Surface {
-    /// Calls `f` with each stack of layers that shows at `p` and its weight.
-    pub fn for_each_layers(&self, p: DVec3, weight: f64, f: &mut impl FnMut(f64, &[Layer])) {
+    /// Calls `f` with each stack of layers that shows at `at` and its weight.
+    pub fn for_each_layers(
+        &self,
+        at: &TexturePoint,
+        weight: f64,
+        f: &mut impl FnMut(f64, &[Layer]),
+    ) {
         match self {
             Surface::Layers(layers) => f(weight, layers),
             Surface::Pattern { pattern, map }
                 if matches!(pattern.kind, scene::PatternKind::Average) =>
             {
                 for (share, surface) in pattern::average_shares(map) {
-                    surface.for_each_layers(p, weight * share, f);
+                    surface.for_each_layers(&at.for_pattern(pattern), weight * share, f);
                 }
             }
             Surface::Pattern { pattern, map } => {
-                let (a, b, t) = locate(map, pattern::evaluate(pattern, p));
+                let at = at.for_pattern(pattern);
+                let (a, b, t) = locate(map, pattern::evaluate(pattern, at.world));
                 if a == b || t == 0.0 {
-                    map[a].1.for_each_layers(p, weight, f);
+                    map[a].1.for_each_layers(&at, weight, f);
                 } else if t == 1.0 {
-                    map[b].1.for_each_layers(p, weight, f);
+                    map[b].1.for_each_layers(&at, weight, f);
                 } else {
-                    map[a].1.for_each_layers(p, weight * (1.0 - t), f);
-                    map[b].1.for_each_layers(p, weight * t, f);
+                    map[a].1.for_each_layers(&at, weight * (1.0 - t), f);
+                    map[b].1.for_each_layers(&at, weight * t, f);
                 }
             }
             Surface::Blend { weights, surfaces } => {
                 let mut w = Vec::with_capacity(surfaces.len());
-                weights.weights(p, &mut w);
+                weights.weights(at.world, &mut w);
                 let total: f64 = w.iter().sum();
                 if total <= 0.0 || !total.is_finite() {
                     // Outside every component's reach (a point of a CSG's other surface):
                     // the first surface, the blob's own texture.
-                    surfaces[0].for_each_layers(p, weight, f);
+                    surfaces[0].for_each_layers(at, weight, f);
                     return;
                 }
                 for (surface, w) in surfaces.iter().zip(w) {
                     if w > 0.0 {
-                        surface.for_each_layers(p, weight * w / total, f);
+                        surface.for_each_layers(at, weight * w / total, f);
                     }
                 }
             }
         }
-    }
-
-    /// The colour light keeps through the surface at `p`: the product of each layer's
-    /// filtered and transmitted colour, averaged over a texture map's blend.
-    pub fn transmitted_at(&self, p: DVec3) -> DVec3 {
-        let mut total = DVec3::ZERO;
-        self.for_each_layers(p, 1.0, &mut |w, layers| {
-            let through = layers.iter().fold(DVec3::ONE, |acc, layer| {
-                let c = layer.pigment.colour_at(p);
-                acc * (c.rgb * c.filter + DVec3::splat(c.transmit))
-            });
-            total += through * w;
-        });
-        total
     }
 
     /// Whether light can pass somewhere: every layer of some stack lets some through.
@@ -137,6 +132,26 @@ impl Surface {
             Surface::Blend { surfaces, .. } => surfaces.iter().any(Surface::may_transmit),
         }
     }
+
+    /// Whether some pattern is uv-mapped.
+    pub fn uses_uv(&self) -> bool {
+        match self {
+            Surface::Layers(layers) => layers.iter().any(|l| l.pigment.uses_uv()),
+            Surface::Pattern { pattern, map } => {
+                pattern.uv_mapping || map.iter().any(|(_, s)| s.uses_uv())
+            }
+            Surface::Blend { surfaces, .. } => surfaces.iter().any(Surface::uses_uv),
+        }
+    }
+}
+
+/// The colour light keeps through a stack of layers at `at`: the product of each layer's
+/// filtered and transmitted colour.
+pub fn transmitted_through(layers: &[Layer], at: &TexturePoint) -> DVec3 {
+    layers.iter().fold(DVec3::ONE, |acc, layer| {
+        let c = layer.pigment.colour_at(at);
+        acc * (c.rgb * c.filter + DVec3::splat(c.transmit))
+    })
 }
 
 /// The colour of a surface point.
@@ -157,27 +172,45 @@ pub enum Pigment {
 }
 
 impl Pigment {
-    pub fn colour_at(&self, p: DVec3) -> Colour {
+    pub fn colour_at(&self, at: &TexturePoint) -> Colour {
         match self {
             Pigment::Solid(c) => *c,
             Pigment::Pattern { pattern, map }
                 if matches!(pattern.kind, scene::PatternKind::Average) =>
             {
                 pattern::weighted_colour(
-                    pattern::average_shares(map)
-                        .map(|(share, pigment)| (share, pigment.colour_at(p))),
+                    pattern::average_shares(map).map(|(share, pigment)| {
+                        (share, pigment.colour_at(&at.for_pattern(pattern)))
+                    }),
                 )
             }
             Pigment::Pattern { pattern, map } => {
-                let (a, b, t) = locate(map, pattern::evaluate(pattern, p));
+                let at = at.for_pattern(pattern);
+                let (a, b, t) = locate(map, pattern::evaluate(pattern, at.world));
                 if a == b || t == 0.0 {
-                    map[a].1.colour_at(p)
+                    map[a].1.colour_at(&at)
                 } else {
-                    map[a].1.colour_at(p).lerp(map[b].1.colour_at(p), t)
+                    map[a].1.colour_at(&at).lerp(map[b].1.colour_at(&at), t)
                 }
             }
             Pigment::Image { map, to_pattern } => {
+                let p = if map.uv_mapping {
+                    at.uv.extend(0.0)
+                } else {
+                    at.world
+                };
                 bitmap::image_map_colour(map, to_pattern.transform_point3(p))
+            }
+        }
+    }
+
+    /// Whether some pattern is uv-mapped.
+    fn uses_uv(&self) -> bool {
+        match self {
+            Pigment::Solid(_) => false,
+            Pigment::Image { map, .. } => map.uv_mapping,
+            Pigment::Pattern { pattern, map } => {
+                pattern.uv_mapping || map.iter().any(|(_, p)| p.uses_uv())
             }
         }
     }
@@ -203,6 +236,7 @@ impl Material {
         let surface = surface_from_scene(texture)?;
         Ok(Material {
             transmits: surface.may_transmit(),
+            uses_uv: surface.uses_uv(),
             surface,
         })
     }
@@ -312,9 +346,12 @@ mod tests {
 
     fn weights(material: &Material, p: DVec3) -> Vec<(f64, DVec3)> {
         let mut seen = Vec::new();
-        material.surface.for_each_layers(p, 1.0, &mut |w, layers| {
-            seen.push((w, layers[0].pigment.colour_at(p).rgb));
-        });
+        let at = TexturePoint::in_space(p);
+        material
+            .surface
+            .for_each_layers(&at, 1.0, &mut |w, layers| {
+                seen.push((w, layers[0].pigment.colour_at(&at).rgb));
+            });
         seen
     }
 
@@ -370,7 +407,10 @@ mod tests {
         let m = Material::from_scene(&layered).unwrap();
         assert!(m.transmits);
         // Each layer keeps filter * colour + transmit: (0.75, 0.5, 0.25), twice.
-        let through = m.surface.transmitted_at(DVec3::ZERO);
+        let Surface::Layers(layers) = &m.surface else {
+            panic!("layers stay layers");
+        };
+        let through = transmitted_through(layers, &TexturePoint::in_space(DVec3::ZERO));
         assert!((through - DVec3::new(0.5625, 0.25, 0.0625)).length() < 1e-12);
     }
 }

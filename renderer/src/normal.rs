@@ -20,6 +20,12 @@ use glam::{DMat3, DVec3};
 
 /// Whether the normal can be evaluated; `Err` names what is missing.
 pub fn check(normal: &scene::Normal) -> Result<(), String> {
+    let (NormalKind::Pattern { pattern, .. }
+    | NormalKind::BumpMap { pattern, .. }
+    | NormalKind::Map { pattern, .. }) = &normal.kind;
+    if pattern.uv_mapping {
+        return Err("not supported yet: uv_mapping on a normal".into());
+    }
     match &normal.kind {
         NormalKind::Pattern { pattern, .. } => match pattern.kind {
             PatternKind::Facets { .. } => Ok(()),

@@ -7,10 +7,12 @@
 
 use crate::bounds::Aabb;
 use crate::interior::Interior;
-use crate::material::Material;
+use crate::material::{Layer, Material, transmitted_through};
 use crate::ray::{Ray, RayKind};
 use crate::shapes::{Roots, Shape};
-use glam::{DAffine3, DMat3, DVec3};
+use crate::texture_point::TexturePoint;
+use analysis::scene::mesh::FaceTexture;
+use glam::{DAffine3, DVec3};
 use std::sync::Arc;
 
 /// Which kinds of rays see an object.
@@ -36,13 +38,21 @@ impl Visibility {
 #[derive(Debug, Clone)]
 pub struct Leaf {
     pub shape: Shape,
-    /// Canonical frame to world; `None` for the identity, the common case of planes.
-    pub to_world: Option<DAffine3>,
-    pub to_local: Option<DAffine3>,
-    /// Transposed inverse linear part, for normals.
-    pub normal_matrix: DMat3,
+    /// World to the canonical frame; `None` for the identity, the common case of planes.
+    /// Normals go back to the world by its transposed linear part. A scene may hold a
+    /// hundred thousand leaves, so nothing derived from it is stored beside it.
+    to_local: Option<DAffine3>,
     pub inverse: bool,
     pub material: Arc<Material>,
+    /// The textures a mesh's triangles name by index; empty for other shapes.
+    face_materials: Box<[Arc<Material>]>,
+    /// Whether light passes somewhere, through the material or a triangle's own.
+    pub transmits: bool,
+    /// Whether some pattern of its materials is uv-mapped.
+    uses_uv: bool,
+    /// The set of lights that shine on the leaf (see `World::lights_for`): 0 for the
+    /// scene's lights, another for a light group's.
+    pub light_set: u32,
     /// What fills the shape; shared by the leaves of one object.
     pub interior: Arc<Interior>,
     pub visibility: Visibility,
@@ -76,11 +86,13 @@ impl Leaf {
         let bounds = shape.bounds().transformed(&to_world);
         Leaf {
             shape,
-            to_world: (!identity).then_some(to_world),
             to_local: (!identity).then_some(to_local),
-            normal_matrix: to_local.matrix3.transpose(),
             inverse,
+            transmits: material.transmits,
+            uses_uv: material.uses_uv,
             material,
+            face_materials: Box::new([]),
+            light_set: 0,
             interior,
             visibility,
             double_illuminate: false,
@@ -110,10 +122,71 @@ impl Leaf {
         self.shape.inside(self.local_point(p)) != self.inverse
     }
 
+    /// Gives a mesh's triangles the materials of its texture list.
+    pub fn set_face_materials(&mut self, materials: Vec<Arc<Material>>) {
+        self.transmits |= materials.iter().any(|m| m.transmits);
+        self.uses_uv |= materials.iter().any(|m| m.uses_uv);
+        self.face_materials = materials.into();
+    }
+
+    /// Where the textures are evaluated at a point of the surface: the shape gives its uv
+    /// coordinates when a pattern needs them.
+    pub fn texture_point(&self, p: DVec3, part: u32) -> TexturePoint {
+        if !self.uses_uv {
+            return TexturePoint::in_space(p);
+        }
+        match &self.shape {
+            Shape::Mesh(mesh) => TexturePoint {
+                world: p,
+                uv: mesh.uv(self.local_point(p), part),
+            },
+            _ => TexturePoint::in_space(p),
+        }
+    }
+
+    /// Calls `f` with each stack of texture layers that colours the point, and its weight:
+    /// the object's texture, a mesh triangle's own, or the three textures of a triangle's
+    /// corners weighted by how near the point is to each.
+    pub fn for_each_layers(&self, at: &TexturePoint, part: u32, f: &mut impl FnMut(f64, &[Layer])) {
+        if let Shape::Mesh(mesh) = &self.shape
+            && !self.face_materials.is_empty()
+        {
+            match mesh.texture(self.local_point(at.world), part) {
+                (FaceTexture::Object, _) => {}
+                (FaceTexture::One(i), _) => {
+                    return self.face_materials[i as usize]
+                        .surface
+                        .for_each_layers(at, 1.0, f);
+                }
+                (FaceTexture::Corners(ids), weights) => {
+                    for (id, weight) in ids.into_iter().zip(weights.to_array()) {
+                        if weight != 0.0 {
+                            self.face_materials[id as usize]
+                                .surface
+                                .for_each_layers(at, weight, f);
+                        }
+                    }
+                    return;
+                }
+            }
+        }
+        self.material.surface.for_each_layers(at, 1.0, f);
+    }
+
+    /// The colour light keeps through the surface at the point, averaged over a texture
+    /// map's or a triangle's blend.
+    pub fn transmitted_at(&self, at: &TexturePoint, part: u32) -> DVec3 {
+        let mut total = DVec3::ZERO;
+        self.for_each_layers(at, part, &mut |w, layers| {
+            total += transmitted_through(layers, at) * w;
+        });
+        total
+    }
+
     /// Whether this opaque standalone leaf crosses the query's interval.
     pub fn blocks(&self, q: &Query) -> bool {
         self.standalone
-            && !self.material.transmits
+            && !self.transmits
             && self.visibility.sees(q.kind)
             && self.first_hit(q).is_some()
     }
@@ -127,8 +200,13 @@ impl Leaf {
     /// The unit outward normal in the world at a point of this leaf's surface.
     pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
         let n = self.shape.normal(self.local_point(p), part);
-        let n = if self.to_world.is_some() {
-            self.normal_matrix * n
+        let n = if let Some(m) = &self.to_local {
+            // The transposed linear part times n: each column's dot product with n.
+            DVec3::new(
+                m.matrix3.x_axis.dot(n),
+                m.matrix3.y_axis.dot(n),
+                m.matrix3.z_axis.dot(n),
+            )
         } else {
             n
         };
@@ -396,4 +474,20 @@ impl Csg {
 
 fn q_clip(bounds: Aabb, q: &Query) -> Option<(f64, f64)> {
     bounds.clip(&q.ray, q.inv_dir, q.tmin, q.tmax)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Scenes hold up to a hundred thousand objects and more; an object stays a few
+    /// cache lines.
+    #[test]
+    fn objects_stay_small() {
+        assert!(
+            std::mem::size_of::<Object>() <= 300,
+            "{}",
+            std::mem::size_of::<Object>()
+        );
+    }
 }

@@ -14,6 +14,7 @@ use crate::light::{Incoming, Light};
 use crate::material::Layer;
 use crate::object::{Hit, Leaf, Query};
 use crate::ray::{Ray, RayKind};
+use crate::texture_point::TexturePoint;
 use analysis::scene::Finish;
 use glam::DVec3;
 use std::sync::Arc;
@@ -48,6 +49,9 @@ impl Quality {
 pub struct World {
     pub bvh: Bvh,
     pub lights: Vec<Light>,
+    /// Which lights shine on which objects, as indices into `lights`: set 0 holds the
+    /// scene's own lights, the others those of light groups (see [`Leaf::light_set`]).
+    pub light_sets: Vec<Vec<u32>>,
     /// What a ray that meets nothing returns, for primary and transmitted rays.
     pub background: Sample,
     /// The background seen in reflections, which never show alpha.
@@ -73,6 +77,15 @@ pub struct World {
     /// The interiors the camera is in that matter to media: containers of media and, in
     /// scenes with an atmosphere, solid objects, which keep it out.
     pub camera_interiors: Vec<Arc<Interior>>,
+}
+
+impl World {
+    /// The lights that shine on `leaf`.
+    pub fn lights_for(&self, leaf: &Leaf) -> impl Iterator<Item = &Light> {
+        self.light_sets[leaf.light_set as usize]
+            .iter()
+            .map(|&i| &self.lights[i as usize])
+    }
 }
 
 /// POV-Ray's greyscale weights.
@@ -146,13 +159,12 @@ impl<'w> Tracer<'w> {
             normal = -normal;
         }
         // A texture map shades each texture it blends and mixes the results.
+        let at = leaf.texture_point(p, hit.part);
         let mut total = Sample::default();
-        leaf.material
-            .surface
-            .for_each_layers(p, 1.0, &mut |w, layers| {
-                let s = self.shade_layers(ray, p, normal, hit, layers, level, weight * w);
-                total = total + s * w;
-            });
+        leaf.for_each_layers(&at, hit.part, &mut |w, layers| {
+            let s = self.shade_layers(ray, &at, normal, hit, layers, level, weight * w);
+            total = total + s * w;
+        });
         total
     }
 
@@ -163,7 +175,7 @@ impl<'w> Tracer<'w> {
     fn shade_layers(
         &mut self,
         ray: &Ray,
-        p: DVec3,
+        at: &TexturePoint,
         raw_normal: DVec3,
         hit: &Hit<'w>,
         layers: &[Layer],
@@ -172,10 +184,11 @@ impl<'w> Tracer<'w> {
     ) -> Sample {
         let world = self.world;
         let leaf: &'w Leaf = hit.leaf;
+        let p = at.world;
         if !world.quality.lighting {
             let top = layers
                 .first()
-                .map_or(DVec3::ZERO, |l| l.pigment.colour_at(p).rgb);
+                .map_or(DVec3::ZERO, |l| l.pigment.colour_at(at).rgb);
             return Sample::new(top, 0.0);
         }
         let relative_ior = self.relative_ior(&leaf.interior);
@@ -199,7 +212,7 @@ impl<'w> Tracer<'w> {
             if i == 0 {
                 top_normal = normal;
             }
-            let pigment = layer.pigment.colour_at(p);
+            let pigment = layer.pigment.colour_at(at);
             let finish = &*layer.finish;
             let opacity = if world.legacy_opacity {
                 1.0 - (pigment.filter * pigment.rgb.max_element() + pigment.transmit)
@@ -213,7 +226,7 @@ impl<'w> Tracer<'w> {
 
             let mut own =
                 pigment.rgb * (finish.ambient * world.ambient_light + finish.emission) * opacity;
-            for light in &world.lights {
+            for light in world.lights_for(leaf) {
                 own += self.direct_light(
                     light,
                     p,
@@ -465,14 +478,14 @@ impl<'w> Tracer<'w> {
                 return colour;
             };
             let leaf: &'w Leaf = hit.leaf;
-            if !leaf.material.transmits {
+            if !leaf.transmits {
                 if leaf.standalone {
                     self.last_blocker = Some(leaf);
                 }
                 return DVec3::ZERO;
             }
             let point = q.ray.at(hit.t);
-            colour *= leaf.material.surface.transmitted_at(point);
+            colour *= leaf.transmitted_at(&leaf.texture_point(point, hit.part), hit.part);
             let interior: &'w Interior = &leaf.interior;
             match inside.iter().position(|i| std::ptr::eq(*i, interior)) {
                 Some(at) => {

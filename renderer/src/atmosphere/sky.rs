@@ -6,6 +6,7 @@
 
 use crate::colour::Sample;
 use crate::material::Pigment;
+use crate::texture_point::TexturePoint;
 use analysis::scene;
 use glam::{DAffine3, DVec3};
 
@@ -44,7 +45,7 @@ impl Sky {
         let mut own = DVec3::ZERO;
         let mut through = DVec3::ONE;
         for layer in &self.layers {
-            let c = layer.colour_at(p);
+            let c = layer.colour_at(&TexturePoint::in_space(p));
             own += through * c.rgb * (1.0 - c.filter - c.transmit);
             through *= c.rgb * c.filter + DVec3::splat(c.transmit);
             if through == DVec3::ZERO {

@@ -20,6 +20,7 @@ mod phase;
 
 use crate::material::Pigment;
 use crate::ray::Ray;
+use crate::texture_point::TexturePoint;
 use analysis::scene::{self, ScatteringKind};
 use glam::DVec3;
 
@@ -114,9 +115,9 @@ impl Medium {
 
     /// The product of the density blocks at `p` (1 without any).
     fn density(&self, p: DVec3) -> DVec3 {
-        self.density
-            .iter()
-            .fold(DVec3::ONE, |d, pigment| d * pigment.colour_at(p).rgb)
+        self.density.iter().fold(DVec3::ONE, |d, pigment| {
+            d * pigment.colour_at(&TexturePoint::in_space(p)).rgb
+        })
     }
 
     /// The extinction coefficient for density `d`.

@@ -2,6 +2,7 @@
 //! surface, whether a point is inside, and its normal; nothing of textures or of where it
 //! sits in the world (an object's transform places it, pbrt's split).
 
+pub mod bicubic_patch;
 mod blob;
 mod cone;
 mod cuboid;
@@ -13,11 +14,13 @@ mod julia;
 mod lathe;
 mod lemon;
 mod math_shape;
+pub mod mesh;
 mod ovus;
 mod parametric;
 mod plane;
 mod plane_curve;
 mod poly;
+mod polygon;
 mod prism;
 mod sor;
 mod sphere;
@@ -32,7 +35,9 @@ pub use cuboid::Cuboid;
 pub use cylinder::Cylinder;
 pub use disc::Disc;
 pub use math_shape::{MathShape, ShapeReport, build as build_math_shape};
+pub use mesh::Mesh;
 pub use plane::Plane;
+pub use polygon::Polygon;
 pub use sphere::Sphere;
 pub use torus::Torus;
 pub use triangle::Triangle;
@@ -42,7 +47,8 @@ use crate::ray::Ray;
 use glam::DVec3;
 
 /// Where a ray crosses a shape: the ray parameter and which part of the surface (a box
-/// face, a cylinder cap), so that the normal can be found later for the one hit that wins.
+/// face, a cylinder cap, a mesh triangle), so that the normal can be found later for the
+/// one hit that wins.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Root {
     pub t: f64,
@@ -51,8 +57,8 @@ pub struct Root {
 
 /// The crossings of one ray with one shape. The first few are kept on the stack, since
 /// the array is built for every ray and shape and most shapes cross a ray at most four
-/// times (a torus); shapes that may cross it more often (a lathe, a prism, a blob) spill
-/// the rest onto the heap, so that CSG sees every crossing.
+/// times (a torus); shapes that may cross it more often (a lathe, a prism, a blob, a mesh)
+/// spill the rest onto the heap, so that CSG sees every crossing.
 #[derive(Debug, Clone)]
 pub struct Roots {
     roots: [Root; Roots::INLINE],
@@ -143,6 +149,9 @@ pub enum Shape {
     Disc(Disc),
     Torus(Torus),
     Triangle(Triangle),
+    /// `mesh`, `mesh2` and the triangles of a `bicubic_patch`.
+    Mesh(Mesh),
+    Polygon(Polygon),
     /// Polynomials, isosurfaces, fractals, sweeps and the other mathematical shapes.
     Math(Box<MathShape>),
 }
@@ -159,6 +168,8 @@ impl Shape {
             Shape::Disc(s) => s.intersect(ray, roots),
             Shape::Torus(s) => s.intersect(ray, roots),
             Shape::Triangle(s) => s.intersect(ray, roots),
+            Shape::Mesh(s) => s.intersect(ray, roots),
+            Shape::Polygon(s) => s.intersect(ray, roots),
             Shape::Math(s) => s.intersect(ray, roots),
         }
     }
@@ -166,8 +177,10 @@ impl Shape {
     /// The nearest crossing in `(tmin, tmax)`. Shapes that search iteratively stop at it
     /// instead of finding every crossing.
     pub fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<Root> {
-        if let Shape::Math(s) = self {
-            return s.first_hit(ray, tmin, tmax);
+        match self {
+            Shape::Math(s) => return s.first_hit(ray, tmin, tmax),
+            Shape::Mesh(s) => return s.first_hit(ray, tmin, tmax),
+            _ => {}
         }
         let mut roots = Roots::new();
         self.intersect(ray, &mut roots);
@@ -188,7 +201,8 @@ impl Shape {
             Shape::Plane(s) => s.inside(p),
             Shape::Disc(s) => s.inside(p),
             Shape::Torus(s) => s.inside(p),
-            Shape::Triangle(_) => false,
+            Shape::Triangle(_) | Shape::Polygon(_) => false,
+            Shape::Mesh(s) => s.inside(p),
             Shape::Math(s) => s.inside(p),
         }
     }
@@ -204,6 +218,8 @@ impl Shape {
             Shape::Disc(_) => DVec3::Z,
             Shape::Torus(s) => s.normal(p),
             Shape::Triangle(s) => s.normal(p),
+            Shape::Mesh(s) => s.normal(p, part),
+            Shape::Polygon(_) => DVec3::Z,
             Shape::Math(s) => s.normal(p, part),
         }
     }
@@ -231,6 +247,8 @@ impl Shape {
                 let [a, b, c] = s.corners;
                 Aabb::new(a.min(b).min(c), a.max(b).max(c))
             }
+            Shape::Mesh(s) => s.bounds(),
+            Shape::Polygon(s) => s.bounds(),
             Shape::Math(s) => s.bounds(),
         }
     }

@@ -1,0 +1,413 @@
+//! A bounding volume hierarchy over any list of boxes: the scene's objects, a mesh's
+//! triangles. It is built once, top down, choosing each split by the surface area
+//! heuristic over a few bins of box centres (Wald's binned build), and flattened into an
+//! array whose nodes need no pointers. The items themselves stay with the caller, which
+//! reorders them as [`Tree::build`] says so that every leaf covers a run of them.
+
+use crate::bounds::Aabb;
+use crate::ray::Ray;
+use glam::DVec3;
+use std::ops::Range;
+
+/// Buckets of box centres along an axis in which split positions are compared.
+const BINS: usize = 12;
+
+/// What visiting a node costs, relative to testing one item, in the surface area heuristic.
+const TRAVERSAL_COST: f64 = 0.5;
+
+/// Below this depth splits follow the heuristic; deeper (rare, in lopsided scenes) they
+/// halve the items, so that the depth stays within the traversal stack.
+const HEURISTIC_DEPTH: usize = 64;
+
+/// The deepest a node may be; the traversal stack holds one entry per level and one more.
+const MAX_DEPTH: usize = 120;
+const STACK_SIZE: usize = MAX_DEPTH + 8;
+
+#[derive(Debug, Clone, Copy)]
+struct Node {
+    bounds: Aabb,
+    /// For a leaf, its first item; for an inner node, the second child's index (the first
+    /// child follows the node directly).
+    index: u32,
+    /// Items in a leaf; 0 for an inner node.
+    count: u32,
+    /// The axis an inner node splits, which orders its children along a ray.
+    axis: u8,
+}
+
+/// The flattened hierarchy.
+#[derive(Debug, Clone, Default)]
+pub struct Tree {
+    nodes: Vec<Node>,
+}
+
+/// An item while the tree is built.
+#[derive(Debug, Clone, Copy)]
+struct Item {
+    bounds: Aabb,
+    centre: DVec3,
+    index: u32,
+}
+
+/// How a node's items are divided.
+enum Split {
+    Leaf,
+    /// The first `n` items (after partitioning) go left.
+    At(usize),
+}
+
+impl Tree {
+    /// The tree over `boxes` with leaves of at most `max_leaf` items, and the order the
+    /// caller must put its items in: position `i` holds item `order[i]`.
+    pub fn build(boxes: &[Aabb], max_leaf: usize) -> (Tree, Vec<u32>) {
+        let mut items: Vec<Item> = boxes
+            .iter()
+            .enumerate()
+            .map(|(i, b)| Item {
+                bounds: *b,
+                centre: b.centre(),
+                index: i as u32,
+            })
+            .collect();
+        let mut nodes = Vec::with_capacity((2 * items.len() / max_leaf.max(1)).max(1));
+        if !items.is_empty() {
+            build_node(&mut items, 0, 0, max_leaf.max(1), &mut nodes);
+        }
+        let order = items.iter().map(|item| item.index).collect();
+        (Tree { nodes }, order)
+    }
+
+    /// The box around every item; empty for an empty tree.
+    pub fn bounds(&self) -> Aabb {
+        self.nodes.first().map_or(Aabb::EMPTY, |n| n.bounds)
+    }
+
+    /// The bytes the nodes take.
+    pub fn memory(&self) -> usize {
+        self.nodes.len() * std::mem::size_of::<Node>()
+    }
+
+    /// Calls `visit` with the items of every leaf whose box the ray crosses within
+    /// `[tmin, tmax]`, the nearer child of each node first. `visit` returns the interval's
+    /// new end (the nearest hit so far, for a nearest-hit search), which culls the leaves
+    /// beyond it.
+    pub fn traverse(
+        &self,
+        ray: &Ray,
+        inv_dir: DVec3,
+        tmin: f64,
+        mut tmax: f64,
+        mut visit: impl FnMut(Range<usize>, f64) -> f64,
+    ) {
+        if self.nodes.is_empty() {
+            return;
+        }
+        let negative = [
+            ray.direction.x < 0.0,
+            ray.direction.y < 0.0,
+            ray.direction.z < 0.0,
+        ];
+        let mut stack = [0u32; STACK_SIZE];
+        let mut top = 1;
+        while top > 0 {
+            top -= 1;
+            let node = &self.nodes[stack[top] as usize];
+            if node.bounds.clip(ray, inv_dir, tmin, tmax).is_none() {
+                continue;
+            }
+            if node.count > 0 {
+                let start = node.index as usize;
+                tmax = visit(start..start + node.count as usize, tmax);
+            } else {
+                let first = stack[top] + 1;
+                let second = node.index;
+                let (near, far) = if negative[node.axis as usize] {
+                    (second, first)
+                } else {
+                    (first, second)
+                };
+                stack[top] = far;
+                stack[top + 1] = near;
+                top += 2;
+            }
+        }
+    }
+}
+
+/// Builds the node for `items` (at `offset` in the final order) and its subtree.
+fn build_node(
+    items: &mut [Item],
+    offset: usize,
+    depth: usize,
+    max_leaf: usize,
+    nodes: &mut Vec<Node>,
+) {
+    let (mut bounds, mut centres) = (Aabb::EMPTY, Aabb::EMPTY);
+    for item in items.iter() {
+        bounds = bounds.union(&item.bounds);
+        centres.min = centres.min.min(item.centre);
+        centres.max = centres.max.max(item.centre);
+    }
+    let here = nodes.len();
+    let (split, axis) = choose_split(items, &bounds, &centres, depth, max_leaf);
+    let left = match split {
+        Split::Leaf => {
+            nodes.push(Node {
+                bounds,
+                index: offset as u32,
+                count: items.len() as u32,
+                axis: 0,
+            });
+            return;
+        }
+        Split::At(left) => left,
+    };
+    nodes.push(Node {
+        bounds,
+        index: 0,
+        count: 0,
+        axis: axis as u8,
+    });
+    let (near, far) = items.split_at_mut(left);
+    build_node(near, offset, depth + 1, max_leaf, nodes);
+    nodes[here].index = nodes.len() as u32;
+    build_node(far, offset + left, depth + 1, max_leaf, nodes);
+}
+
+/// Chooses how to divide `items` (within `bounds`, their centres within `centres`),
+/// partitioning them in place when they are divided, and the axis of the division.
+fn choose_split(
+    items: &mut [Item],
+    bounds: &Aabb,
+    centres: &Aabb,
+    depth: usize,
+    max_leaf: usize,
+) -> (Split, usize) {
+    let n = items.len();
+    if n <= 1 || depth >= MAX_DEPTH {
+        return (Split::Leaf, 0);
+    }
+    let extent = centres.max - centres.min;
+    let axis = longest_axis(extent);
+    if extent[axis] <= 0.0 || !extent[axis].is_finite() {
+        // Every centre coincides: only the count can divide them.
+        return if n <= max_leaf {
+            (Split::Leaf, 0)
+        } else {
+            (Split::At(n / 2), axis)
+        };
+    }
+    if depth >= HEURISTIC_DEPTH {
+        return (median_split(items, axis), axis);
+    }
+    let Some((cost, axis, bin)) = cheapest_bin(items, centres) else {
+        return (median_split(items, axis), axis);
+    };
+    let area = surface_area(bounds);
+    let leaf_cost = n as f64;
+    let split_cost = TRAVERSAL_COST + cost / area.max(f64::MIN_POSITIVE);
+    if n <= max_leaf && leaf_cost <= split_cost {
+        return (Split::Leaf, 0);
+    }
+    let scale = BINS as f64 / (centres.max[axis] - centres.min[axis]);
+    let min = centres.min[axis];
+    let left = partition(items, |item| bin_of(item.centre[axis], min, scale) <= bin);
+    if left == 0 || left == n {
+        return (median_split(items, axis), axis);
+    }
+    (Split::At(left), axis)
+}
+
+/// The best split among the bins of all three axes: its cost (the sum over both sides of
+/// area times count), its axis and the last bin of its left side. One pass over the items
+/// fills the bins of every axis.
+fn cheapest_bin(items: &[Item], centres: &Aabb) -> Option<(f64, usize, usize)> {
+    let extent = centres.max - centres.min;
+    let scale = DVec3::splat(BINS as f64) / extent;
+    let mut counts = [[0usize; BINS]; 3];
+    let mut boxes = [[Aabb::EMPTY; BINS]; 3];
+    for item in items {
+        for axis in 0..3 {
+            if extent[axis] > 0.0 {
+                let b = bin_of(item.centre[axis], centres.min[axis], scale[axis]);
+                counts[axis][b] += 1;
+                boxes[axis][b] = boxes[axis][b].union(&item.bounds);
+            }
+        }
+    }
+    let mut best: Option<(f64, usize, usize)> = None;
+    for axis in 0..3 {
+        if extent[axis] <= 0.0 {
+            continue;
+        }
+        let (counts, boxes) = (&counts[axis], &boxes[axis]);
+        // The cost of everything right of each boundary, swept from the right.
+        let mut right_cost = [0.0; BINS];
+        let (mut area_box, mut count) = (Aabb::EMPTY, 0);
+        for b in (1..BINS).rev() {
+            area_box = area_box.union(&boxes[b]);
+            count += counts[b];
+            right_cost[b] = surface_area(&area_box) * count as f64;
+        }
+        let (mut left_box, mut left_count) = (Aabb::EMPTY, 0);
+        for b in 0..BINS - 1 {
+            left_box = left_box.union(&boxes[b]);
+            left_count += counts[b];
+            if left_count == 0 || left_count == items.len() {
+                continue;
+            }
+            let cost = surface_area(&left_box) * left_count as f64 + right_cost[b + 1];
+            if best.is_none_or(|(c, _, _)| cost < c) {
+                best = Some((cost, axis, b));
+            }
+        }
+    }
+    best
+}
+
+fn bin_of(value: f64, min: f64, scale: f64) -> usize {
+    (((value - min) * scale) as usize).min(BINS - 1)
+}
+
+/// Halves the items at the median centre along `axis`.
+fn median_split(items: &mut [Item], axis: usize) -> Split {
+    let mid = items.len() / 2;
+    items.select_nth_unstable_by(mid, |a, b| a.centre[axis].total_cmp(&b.centre[axis]));
+    Split::At(mid)
+}
+
+/// Moves the items for which `left` holds to the front; returns how many there are.
+fn partition(items: &mut [Item], left: impl Fn(&Item) -> bool) -> usize {
+    let mut first_right = 0;
+    for i in 0..items.len() {
+        if left(&items[i]) {
+            items.swap(i, first_right);
+            first_right += 1;
+        }
+    }
+    first_right
+}
+
+fn longest_axis(extent: DVec3) -> usize {
+    if extent.x >= extent.y && extent.x >= extent.z {
+        0
+    } else if extent.y >= extent.z {
+        1
+    } else {
+        2
+    }
+}
+
+fn surface_area(b: &Aabb) -> f64 {
+    if b.is_empty() {
+        return 0.0;
+    }
+    let d = b.max - b.min;
+    2.0 * (d.x * d.y + d.y * d.z + d.z * d.x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn unit_box(at: DVec3) -> Aabb {
+        Aabb::new(at - DVec3::splat(0.5), at + DVec3::splat(0.5))
+    }
+
+    /// Every item the ray's box test admits, by brute force and through the tree.
+    fn crossed(tree: &Tree, order: &[u32], boxes: &[Aabb], ray: &Ray) -> (Vec<u32>, Vec<u32>) {
+        let inv = ray.direction.recip();
+        let mut expected: Vec<u32> = (0..boxes.len() as u32)
+            .filter(|&i| {
+                boxes[i as usize]
+                    .clip(ray, inv, 0.0, f64::INFINITY)
+                    .is_some()
+            })
+            .collect();
+        let mut found = Vec::new();
+        tree.traverse(ray, inv, 0.0, f64::INFINITY, |range, tmax| {
+            for &i in &order[range] {
+                if boxes[i as usize]
+                    .clip(ray, inv, 0.0, f64::INFINITY)
+                    .is_some()
+                {
+                    found.push(i);
+                }
+            }
+            tmax
+        });
+        expected.sort_unstable();
+        found.sort_unstable();
+        (expected, found)
+    }
+
+    #[test]
+    fn traversal_finds_what_brute_force_finds() {
+        // A grid of boxes with a dense cluster in one corner, so that the heuristic
+        // has lopsided splits to make.
+        let mut boxes = Vec::new();
+        for i in 0..20 {
+            for j in 0..20 {
+                boxes.push(unit_box(DVec3::new(i as f64 * 3.0, j as f64 * 3.0, 0.0)));
+            }
+        }
+        for k in 0..200 {
+            boxes.push(unit_box(DVec3::new(0.01 * k as f64, 0.0, 5.0)));
+        }
+        let (tree, order) = Tree::build(&boxes, 4);
+        let mut sorted = order.clone();
+        sorted.sort_unstable();
+        assert_eq!(sorted, (0..boxes.len() as u32).collect::<Vec<_>>());
+        for (origin, direction) in [
+            (DVec3::new(-5.0, 3.0, 0.0), DVec3::X),
+            (DVec3::new(-1.0, -1.0, -10.0), DVec3::new(0.1, 0.1, 1.0)),
+            (DVec3::new(1.0, 0.0, -10.0), DVec3::Z),
+        ] {
+            let (expected, found) = crossed(&tree, &order, &boxes, &Ray::new(origin, direction));
+            assert!(!expected.is_empty());
+            assert_eq!(expected, found);
+        }
+    }
+
+    #[test]
+    fn coincident_boxes_still_make_small_leaves() {
+        let boxes = vec![unit_box(DVec3::ZERO); 1000];
+        let (tree, _) = Tree::build(&boxes, 4);
+        assert!(tree.nodes.iter().all(|n| n.count <= 4));
+        let mut seen = 0;
+        let ray = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
+        tree.traverse(
+            &ray,
+            ray.direction.recip(),
+            0.0,
+            f64::INFINITY,
+            |range, tmax| {
+                seen += range.len();
+                tmax
+            },
+        );
+        assert_eq!(seen, 1000);
+    }
+
+    #[test]
+    fn the_interval_end_culls_far_leaves() {
+        let boxes: Vec<Aabb> = (0..100)
+            .map(|i| unit_box(DVec3::new(0.0, 0.0, 2.0 * i as f64)))
+            .collect();
+        let (tree, order) = Tree::build(&boxes, 1);
+        let ray = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
+        let mut visited = Vec::new();
+        tree.traverse(
+            &ray,
+            ray.direction.recip(),
+            0.0,
+            f64::INFINITY,
+            |range, _| {
+                visited.extend_from_slice(&order[range]);
+                // The first box hit ends the search at its far side.
+                5.5
+            },
+        );
+        assert_eq!(visited, vec![0]);
+    }
+}
