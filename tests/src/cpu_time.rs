@@ -1,5 +1,5 @@
-//! CPU time of this process for the benchmarks: on a shared machine wall time would
-//! measure the neighbours.
+//! CPU time of this process for the benchmarks (on a shared machine wall time would
+//! measure the neighbours), and its peak memory.
 
 use std::time::Duration;
 
@@ -11,4 +11,13 @@ pub fn process_cpu_time() -> Option<Duration> {
         total += stat.split_whitespace().next()?.parse::<u64>().ok()?;
     }
     Some(Duration::from_nanos(total))
+}
+
+/// The most memory the process has held at once (its peak resident set), in bytes, where
+/// Linux tells it.
+pub fn peak_resident_bytes() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
 }
