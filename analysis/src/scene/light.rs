@@ -71,9 +71,8 @@ impl Light {
     }
 }
 
-/// `light_group { }`: objects lit by the group's own lights (and those of the groups around
-/// it), and by the scene's other lights only with `global_lights`. It is a union of its
-/// objects otherwise.
+/// `light_group { }`: objects lit by the group's own lights, and by the scene's other lights
+/// only with `global_lights`. It is a union of its objects otherwise.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LightGroup {
     pub objects: Vec<Object>,
