@@ -1,5 +1,6 @@
 //! Axis-aligned bounding boxes in world space, with the slab test rays use to skip objects.
 
+use crate::fast_math::{max, min};
 use crate::ray::Ray;
 use glam::{DAffine3, DVec3};
 
@@ -114,8 +115,8 @@ impl Aabb {
         // NaN (0 * inf on a slab boundary) must not reject a hit: `min`/`max` drop it.
         let near = t1.min(t2);
         let far = t1.max(t2);
-        let lo = tmin.max(near.x).max(near.y).max(near.z);
-        let hi = tmax.min(far.x).min(far.y).min(far.z);
+        let lo = max(max(max(tmin, near.x), near.y), near.z);
+        let hi = min(min(min(tmax, far.x), far.y), far.z);
         (lo <= hi).then_some((lo, hi))
     }
 }

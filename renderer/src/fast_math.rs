@@ -1,6 +1,10 @@
 //! Elementary functions the shapes call in their inner loops, faster than the standard
 //! library's where that matters: in WebAssembly the standard `sin` and `cos` are software
-//! routines run by an interpreter, and isosurfaces call them millions of times.
+//! routines run by an interpreter, and isosurfaces call them millions of times. Even
+//! `f64::min`, `f64::max` and `f64::round` are calls to libm there (WebAssembly's own
+//! `min`, `max` and `nearest` treat NaN and halves differently), and a call costs the
+//! interpreter far more than the comparison it wraps; `min`, `max` and `round` below give
+//! the same results without one.
 
 use std::f64::consts::FRAC_2_PI;
 
@@ -12,13 +16,40 @@ const PIO2_LOW: f64 = 2.022_266_248_795_950_6e-21;
 /// The largest argument reduced here; beyond it the standard functions take over.
 const REDUCTION_LIMIT: f64 = 1.0e5;
 
+/// The smaller of `x` and `y`, or the one that is not NaN: `f64::min` as it is compiled
+/// natively, to the bit (of two equal zeros, `x`).
+#[inline]
+pub fn min(x: f64, y: f64) -> f64 {
+    if x.is_nan() || y < x { y } else { x }
+}
+
+/// The larger of `x` and `y`, or the one that is not NaN: `f64::max` as it is compiled
+/// natively, to the bit.
+#[inline]
+pub fn max(x: f64, y: f64) -> f64 {
+    if x.is_nan() || y > x { y } else { x }
+}
+
+/// `x` rounded to the nearest integer, halves away from zero: `f64::round` to the bit.
+/// `trunc` and `copysign` are single instructions in WebAssembly, and the fraction
+/// `x - trunc(x)` is exact.
+#[inline]
+pub fn round(x: f64) -> f64 {
+    let whole = x.trunc();
+    if (x - whole).abs() >= 0.5 {
+        whole + 1f64.copysign(x)
+    } else {
+        whole
+    }
+}
+
 /// sin(x) and cos(x), within a few units in the last place, sharing one range reduction.
 #[inline]
 pub fn sin_cos(x: f64) -> (f64, f64) {
     if x.is_nan() || x.abs() > REDUCTION_LIMIT {
         return (x.sin(), x.cos());
     }
-    let k = (x * FRAC_2_PI).round();
+    let k = round(x * FRAC_2_PI);
     let r = ((x - k * PIO2_HIGH) - k * PIO2_MID) - k * PIO2_LOW;
     let r2 = r * r;
     // Taylor series to the 15th and 16th powers: on |r| <= π/4 the first omitted terms are
@@ -52,6 +83,37 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn min_max_and_round_match_the_standard_library() {
+        let values = [
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.5,
+            2.5,
+            -2.5,
+            0.499_999_999_999_999_94,
+            4_503_599_627_370_495.5,
+            9.007_199_254_740_993e15,
+            1e300,
+            f64::MIN_POSITIVE,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            3.7,
+            -3.7,
+        ];
+        let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
+        for &x in &values {
+            assert!(same(round(x), x.round()), "round({x})");
+            for &y in &values {
+                assert!(same(min(x, y), x.min(y)), "min({x}, {y})");
+                assert!(same(max(x, y), x.max(y)), "max({x}, {y})");
+            }
+        }
+    }
 
     #[test]
     fn sin_cos_match_the_standard_library() {

@@ -598,13 +598,13 @@ impl Program {
                     r[*o as usize] = v
                         .iter()
                         .map(|a| r[*a as usize])
-                        .fold(f64::INFINITY, f64::min)
+                        .fold(f64::INFINITY, fast_math::min)
                 }
                 Inst::Max(o, v) => {
                     r[*o as usize] = v
                         .iter()
                         .map(|a| r[*a as usize])
-                        .fold(f64::NEG_INFINITY, f64::max)
+                        .fold(f64::NEG_INFINITY, fast_math::max)
                 }
                 Inst::Call(o, f, v) => {
                     let values: Vec<f64> = v.iter().map(|a| r[*a as usize]).collect();

@@ -33,4 +33,43 @@ impl Image {
         let w = self.width as usize;
         self.pixels[y as usize * w + x as usize] = value;
     }
+
+    /// The samples at 8 bits, red, green, blue and (when it carries information) alpha
+    /// of each pixel, row by row: what an 8-bit PNG file and the Typst plugin hold.
+    pub fn samples8(&self) -> Vec<u8> {
+        let channels = if self.has_alpha { 4 } else { 3 };
+        let mut samples = Vec::with_capacity(self.pixels.len() * channels);
+        for pixel in &self.pixels {
+            samples.extend(pixel[..channels].iter().map(|&value| quantise8(value)));
+        }
+        samples
+    }
+}
+
+/// A sample in 0..=1 (clipped) to the nearest of 256 levels, halves rounded up. Written
+/// out rather than with `f32::round`, which is a call to libm in WebAssembly, made for
+/// every sample of every image the plugin returns; `x - trunc(x)` is exact.
+fn quantise8(value: f32) -> u8 {
+    let x = value.clamp(0.0, 1.0) * 255.0;
+    let whole = x.trunc();
+    (if x - whole >= 0.5 { whole + 1.0 } else { whole }) as u8
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quantise8_rounds_as_f32_round_does() {
+        let mut value = -0.01f32;
+        while value <= 1.01 {
+            let expected = (value.clamp(0.0, 1.0) * 255.0).round() as u8;
+            assert_eq!(quantise8(value), expected, "{value}");
+            value += 1.0 / 65536.0;
+        }
+        for value in [0.5 / 255.0, 1.5 / 255.0, 0.499_999_97 / 255.0, f32::NAN] {
+            let expected = (value.clamp(0.0, 1.0) * 255.0).round() as u8;
+            assert_eq!(quantise8(value), expected, "{value}");
+        }
+    }
 }

@@ -31,17 +31,18 @@ pub fn encode_png(image: &Image, options: &RenderOptions) -> Vec<u8> {
         });
     }
     let channels = if image.has_alpha { 4 } else { 3 };
-    let mut data = Vec::with_capacity(image.pixels.len() * channels * if sixteen { 2 } else { 1 });
-    for pixel in &image.pixels {
-        for &value in &pixel[..channels] {
-            let v = value.clamp(0.0, 1.0);
-            if sixteen {
+    let data = if sixteen {
+        let mut data = Vec::with_capacity(image.pixels.len() * channels * 2);
+        for pixel in &image.pixels {
+            for &value in &pixel[..channels] {
+                let v = value.clamp(0.0, 1.0);
                 data.extend_from_slice(&((v * 65535.0).round() as u16).to_be_bytes());
-            } else {
-                data.push((v * 255.0).round() as u8);
             }
         }
-    }
+        data
+    } else {
+        image.samples8()
+    };
     // Writing to a vector cannot fail, and the header matches the data by construction.
     let mut writer = encoder.write_header().expect("PNG header into memory");
     writer

@@ -4,6 +4,8 @@
 //! polynomial is monotonic; each stretch whose ends differ in sign holds one root, refined
 //! by bracketed Newton iteration. Coefficients are given lowest degree first.
 
+use crate::fast_math;
+
 /// The highest degree POV-Ray's `poly` allows.
 pub const MAX_DEGREE: usize = 15;
 
@@ -29,7 +31,9 @@ impl Poly {
     }
 
     fn scale(&self) -> f64 {
-        self.coeffs().iter().fold(0.0f64, |m, c| m.max(c.abs()))
+        self.coeffs()
+            .iter()
+            .fold(0.0f64, |m, c| fast_math::max(m, c.abs()))
     }
 
     /// Drops leading coefficients at or below `tolerance`.
@@ -73,7 +77,9 @@ pub fn quartic_roots_in(coeffs: &[f64; 5], lo: f64, hi: f64) -> ([f64; 4], usize
         }
     };
     let lead = coeffs[4];
-    let scale = coeffs.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    let scale = coeffs
+        .iter()
+        .fold(0.0f64, |m, c| fast_math::max(m, c.abs()));
     if lead.abs() <= 1e-14 * scale || !scale.is_finite() || lead.is_nan() {
         let mut searched = Vec::new();
         roots_in(coeffs, lo, hi, &mut searched);
@@ -171,7 +177,9 @@ pub fn quartic_roots_in(coeffs: &[f64; 5], lo: f64, hi: f64) -> ([f64; 4], usize
 pub fn cubic_roots_in(coeffs: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3], usize) {
     let mut found = ([0.0; 3], 0);
     let lead = coeffs[3];
-    let scale = coeffs.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    let scale = coeffs
+        .iter()
+        .fold(0.0f64, |m, c| fast_math::max(m, c.abs()));
     if lead.abs() <= 1e-14 * scale || !scale.is_finite() || lead.is_nan() {
         let mut searched = Vec::new();
         roots_in(coeffs, lo, hi, &mut searched);

@@ -9,6 +9,7 @@
 
 use crate::camera::Camera;
 use crate::colour::{Curve, EncodeTable, Sample};
+use crate::fast_math;
 use crate::tracer::{Tracer, World};
 
 /// Everything needed to turn image positions into samples.
@@ -69,8 +70,8 @@ impl Sampler<'_> {
     /// A pseudo-random offset in [-0.5, 0.5)² for a sample position, the same whatever
     /// thread or order traces it.
     fn jitter_at(&self, x: f64, y: f64) -> (f64, f64) {
-        let qx = (x * 65536.0).round() as i64 as u64;
-        let qy = (y * 65536.0).round() as i64 as u64;
+        let qx = fast_math::round(x * 65536.0) as i64 as u64;
+        let qy = fast_math::round(y * 65536.0) as i64 as u64;
         let h = mix(qx.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ qy);
         let a = (h >> 11) as f64 / (1u64 << 53) as f64;
         let b = (mix(h) >> 11) as f64 / (1u64 << 53) as f64;

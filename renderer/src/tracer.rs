@@ -9,6 +9,7 @@ mod participating;
 use crate::atmosphere::{Atmosphere, Sky};
 use crate::bvh::Bvh;
 use crate::colour::Sample;
+use crate::fast_math;
 use crate::interior::Interior;
 use crate::light::{Incoming, Light};
 use crate::material::Layer;
@@ -244,7 +245,7 @@ impl<'w> Tracer<'w> {
             if finish.conserve_energy {
                 filter *= (DVec3::ONE - reflectivity).min(DVec3::ONE);
             }
-            trans = greyscale(filter).abs().min(1.0);
+            trans = fast_math::min(greyscale(filter).abs(), 1.0);
         }
 
         // Light from behind the surface.

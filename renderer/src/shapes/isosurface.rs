@@ -7,6 +7,7 @@
 //! holds the crossing. The largest gradient met is recorded for POV-Ray's warning.
 
 use super::{Root, Roots};
+use crate::fast_math;
 use crate::function_program::Program;
 use crate::ray::Ray;
 use analysis::function::Function;
@@ -211,7 +212,7 @@ impl Isosurface {
         if t2 < 0.0 {
             return;
         }
-        t1 = t1.max(0.0);
+        t1 = fast_math::max(t1, 0.0);
         let max_gradient = self.max_gradient.max(self.record.adapted.get());
         let mut search = Search {
             iso: self,
@@ -252,7 +253,7 @@ impl Isosurface {
                 }
             }
         }
-        let mut tmin = t1.min(t2);
+        let mut tmin = fast_math::min(t1, t2);
         let tmax = t2;
         if tmax - tmin < accuracy {
             return;

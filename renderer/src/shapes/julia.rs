@@ -5,6 +5,7 @@
 //! pins down to 1e-7. The normal is the gradient of |h_n|² with respect to the point.
 
 use super::Root;
+use crate::fast_math::{max, min};
 use crate::ray::Ray;
 use analysis::scene::math_shapes::{JuliaAlgebra, JuliaFunction};
 use glam::{DVec3, DVec4};
@@ -135,7 +136,7 @@ impl Julia {
                 } else {
                     self.min_step
                 };
-                return (false, dist.max(0.0));
+                return (false, max(dist, 0.0));
             }
             let (fa, fda) = apply(self.function, a);
             let (fb, fdb) = apply(self.function, b);
@@ -171,11 +172,11 @@ impl Julia {
         }
         let root = disc.sqrt();
         let (near, far) = (-b - root, -b + root);
-        let end = far.min(tmax * len);
+        let end = min(far, tmax * len);
         if end < TOLERANCE {
             return 0;
         }
-        let mut depth = near.max(TOLERANCE).max(tmin * len);
+        let mut depth = max(max(near, TOLERANCE), tmin * len);
         if depth > end {
             return 0;
         }
@@ -194,7 +195,7 @@ impl Julia {
         'march: while depth < end && found < out.len() {
             // March until a step lands on the other side of the boundary.
             let (mut point, next, next_dist) = loop {
-                let step = dist.max(self.min_step);
+                let step = max(dist, self.min_step);
                 depth += step;
                 if depth > end {
                     break 'march;
@@ -378,8 +379,8 @@ impl Complex {
 
     fn sqrt(self) -> Complex {
         let m = self.norm();
-        let re = ((m + self.re) * 0.5).max(0.0).sqrt();
-        let im = ((m - self.re) * 0.5).max(0.0).sqrt();
+        let re = max((m + self.re) * 0.5, 0.0).sqrt();
+        let im = max((m - self.re) * 0.5, 0.0).sqrt();
         Complex::new(re, if self.im < 0.0 { -im } else { im })
     }
 

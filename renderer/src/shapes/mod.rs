@@ -43,6 +43,7 @@ pub use torus::Torus;
 pub use triangle::Triangle;
 
 use crate::bounds::Aabb;
+use crate::fast_math;
 use crate::ray::Ray;
 use glam::DVec3;
 
@@ -274,7 +275,7 @@ pub(crate) fn solve_quadratic_half(a: f64, b: f64, c: f64) -> Option<(f64, f64)>
     }
     let t1 = q / a;
     let t2 = c / q;
-    Some((t1.min(t2), t1.max(t2)))
+    Some((fast_math::min(t1, t2), fast_math::max(t1, t2)))
 }
 
 #[cfg(test)]

@@ -8,6 +8,7 @@
 
 use super::Roots;
 use crate::bounds::Aabb;
+use crate::fast_math::{max, min};
 use crate::ray::Ray;
 use analysis::scene::math_shapes::SplineKind;
 use glam::DVec3;
@@ -83,8 +84,8 @@ impl Piece {
                 o.dot(ray.direction),
                 o.length_squared() - r2,
             ) {
-                lo = lo.min(t0);
-                hi = hi.max(t1);
+                lo = min(lo, t0);
+                hi = max(hi, t1);
             }
         }
         // The cylinder between the end spheres.
@@ -103,15 +104,15 @@ impl Piece {
                 let (mut s0, mut s1) = (f64::NEG_INFINITY, f64::INFINITY);
                 if dd != 0.0 {
                     let (x, y) = (-od / dd, (1.0 - od) / dd);
-                    s0 = x.min(y);
-                    s1 = x.max(y);
+                    s0 = min(x, y);
+                    s1 = max(x, y);
                 } else if !(0.0..=1.0).contains(&od) {
                     s1 = s0;
                 }
-                let (c0, c1) = (t0.max(s0), t1.min(s1));
+                let (c0, c1) = (max(t0, s0), min(t1, s1));
                 if c0 <= c1 {
-                    lo = lo.min(c0);
-                    hi = hi.max(c1);
+                    lo = min(lo, c0);
+                    hi = max(hi, c1);
                 }
             }
         }
@@ -194,8 +195,8 @@ impl SphereSweep {
                     {
                         out.push(Candidate {
                             piece: i,
-                            t0: t0.max(tmin),
-                            t1: t1.min(tmax),
+                            t0: max(t0, tmin),
+                            t1: min(t1, tmax),
                         });
                     }
                 }
@@ -349,7 +350,7 @@ impl SphereSweep {
             }
             let step = d / slope;
             // Only small corrections: a grazing ray must not be thrown far away.
-            if step.abs() * ray.direction.length() > 4.0 * self.tolerance.max(d.abs()) {
+            if step.abs() * ray.direction.length() > 4.0 * max(self.tolerance, d.abs()) {
                 break;
             }
             t -= step;
@@ -376,7 +377,7 @@ impl SphereSweep {
                 break;
             }
             let piece = &self.pieces[c.piece as usize];
-            if let Some(t) = self.trace_piece(piece, ray, c.t0, c.t1.min(best), true)
+            if let Some(t) = self.trace_piece(piece, ray, c.t0, min(c.t1, best), true)
                 && t > tmin
                 && t < best
             {

@@ -2,6 +2,7 @@
 //! in the x-z plane, centred on the origin.
 
 use super::Roots;
+use crate::fast_math::{max, min};
 use crate::polynomial;
 use crate::ray::Ray;
 use glam::DVec3;
@@ -30,8 +31,8 @@ impl Torus {
         let (o, d) = (ray.origin, ray.direction);
         if d.y != 0.0 {
             let (ya, yb) = ((-small - o.y) / d.y, (small - o.y) / d.y);
-            t0 = t0.max(ya.min(yb));
-            t1 = t1.min(ya.max(yb));
+            t0 = max(t0, min(ya, yb));
+            t1 = min(t1, max(ya, yb));
         } else if o.y.abs() > small {
             return;
         }
@@ -45,7 +46,7 @@ impl Torus {
         let (e, f) = (d.x * d.x + d.z * d.z, o.x * d.x + o.z * d.z);
         let apex = if e > 0.0 { -f / e } else { t0 };
         let nearest = rho2(apex.clamp(t0, t1));
-        let farthest = rho2(t0).max(rho2(t1));
+        let farthest = max(rho2(t0), rho2(t1));
         // The hole around the axis exists only when the tube is thinner than the ring; a
         // spindle torus (minor above major) reaches the axis.
         let hole = if big > small { big - small } else { 0.0 };

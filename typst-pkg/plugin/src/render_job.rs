@@ -66,15 +66,7 @@ fn files(request: &Request) -> MemoryFiles {
 
 /// The image as 8-bit samples, quantised as the PNG writer quantises them.
 fn pixels(image: &Image) -> Pixels {
-    let channels = if image.has_alpha { 4 } else { 3 };
-    let mut samples = Vec::with_capacity(image.pixels.len() * channels);
-    for pixel in &image.pixels {
-        samples.extend(
-            pixel[..channels]
-                .iter()
-                .map(|value| (value.clamp(0.0, 1.0) * 255.0).round() as u8),
-        );
-    }
+    let samples = image.samples8();
     Pixels {
         width: image.width,
         height: image.height,
