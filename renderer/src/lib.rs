@@ -22,6 +22,7 @@ mod options;
 pub mod pipeline;
 mod png_output;
 mod polynomial;
+mod radiosity;
 mod ray;
 mod render;
 mod sampling;

@@ -21,6 +21,7 @@ pub struct Visibility {
     pub no_image: bool,
     pub no_reflection: bool,
     pub no_shadow: bool,
+    pub no_radiosity: bool,
 }
 
 impl Visibility {
@@ -29,6 +30,7 @@ impl Visibility {
             RayKind::Primary => !self.no_image,
             RayKind::Reflected => !self.no_reflection,
             RayKind::Shadow => !self.no_shadow,
+            RayKind::Radiosity => !self.no_radiosity,
             RayKind::Transmitted => true,
         }
     }
@@ -58,6 +60,8 @@ pub struct Leaf {
     pub visibility: Visibility,
     /// Lit from behind as from the front.
     pub double_illuminate: bool,
+    /// `radiosity { importance }`: the share of radiosity rays meeting it that are shaded.
+    pub importance: f64,
     /// A whole object of its own, not part of a CSG: its surface alone decides whether it
     /// blocks a ray.
     pub standalone: bool,
@@ -96,6 +100,7 @@ impl Leaf {
             interior,
             visibility,
             double_illuminate: false,
+            importance: 1.0,
             standalone: false,
             bounds,
         }

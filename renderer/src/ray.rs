@@ -30,4 +30,6 @@ pub enum RayKind {
     Transmitted,
     /// Towards a light, to find what blocks it.
     Shadow,
+    /// Gathering indirect light for radiosity.
+    Radiosity,
 }

@@ -8,6 +8,7 @@ use crate::camera::Camera;
 use crate::colour::{Curve, EncodeTable, Sample};
 use crate::image::Image;
 use crate::options::{Extent, Gamma, RenderOptions};
+use crate::radiosity;
 use crate::sampling::{self, CompareCurve, Compared, Sampler, Subdivider};
 use crate::tracer::Tracer;
 use analysis::scene::{Origin, Scene};
@@ -25,7 +26,7 @@ pub fn render_with_warnings(
     scene: &Scene,
     options: &RenderOptions,
 ) -> Result<(Image, Vec<(String, Origin)>), BuildError> {
-    let world = build_world(
+    let mut world = build_world(
         scene,
         BuildSettings {
             quality: options.quality,
@@ -39,6 +40,14 @@ pub fn render_with_warnings(
     })?;
     let (width, height) = (options.width.max(1), options.height.max(1));
     let region = Region::from_options(options, width, height);
+    let frame = radiosity::Frame {
+        width,
+        height,
+        columns: (region.x0, region.x1),
+        rows: (region.y0, region.y1),
+        corners: options.antialias && options.aa_method == 2,
+    };
+    radiosity::pretrace(&mut world, &camera, &frame);
     let working = match scene.settings.assumed_gamma {
         Some(g) => Curve::from_gamma(Gamma::Power(g)),
         None => Curve::Identity,

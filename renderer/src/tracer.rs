@@ -31,6 +31,8 @@ pub struct Quality {
     pub normals: bool,
     /// Reflected, refracted and transmitted rays.
     pub secondary_rays: bool,
+    /// Radiosity (and, in POV-Ray, media and subsurface scattering).
+    pub radiosity: bool,
 }
 
 impl Quality {
@@ -41,6 +43,7 @@ impl Quality {
             area_lights: level >= 5,
             normals: level >= 6,
             secondary_rays: level >= 8,
+            radiosity: level >= 9,
         }
     }
 }
@@ -78,6 +81,8 @@ pub struct World {
     /// The interiors the camera is in that matter to media: containers of media and, in
     /// scenes with an atmosphere, solid objects, which keep it out.
     pub camera_interiors: Vec<Arc<Interior>>,
+    /// Indirect light, when the scene asks for radiosity and the quality allows it.
+    pub radiosity: Option<crate::radiosity::Radiosity>,
 }
 
 impl World {
@@ -90,13 +95,13 @@ impl World {
 }
 
 /// POV-Ray's greyscale weights.
-fn greyscale(c: DVec3) -> f64 {
+pub(crate) fn greyscale(c: DVec3) -> f64 {
     0.297 * c.x + 0.589 * c.y + 0.114 * c.z
 }
 
 /// A tracer for one thread: the world and scratch space reused from ray to ray.
 pub struct Tracer<'w> {
-    world: &'w World,
+    pub(crate) world: &'w World,
     scratch: Vec<Hit<'w>>,
     /// The interiors the current ray is inside, innermost last (compared by identity).
     interiors: Vec<&'w Interior>,
@@ -108,6 +113,8 @@ pub struct Tracer<'w> {
     area_samples: Vec<Option<DVec3>>,
     /// The interiors shadow rays start in: those of a media sample's containers.
     shadow_start: Vec<&'w Interior>,
+    /// Where the current ray stands in the radiosity computation; `None` without it.
+    pub(crate) radiosity: Option<crate::radiosity::Walk<'w>>,
 }
 
 impl<'w> Tracer<'w> {
@@ -119,6 +126,10 @@ impl<'w> Tracer<'w> {
             last_blocker: None,
             area_samples: Vec::new(),
             shadow_start: Vec::new(),
+            radiosity: world
+                .radiosity
+                .as_ref()
+                .map(crate::radiosity::Walk::rendering),
         }
     }
 
@@ -151,7 +162,13 @@ impl<'w> Tracer<'w> {
         sample
     }
 
-    fn shade(&mut self, ray: &Ray, hit: &Hit<'w>, level: u32, weight: f64) -> Sample {
+    /// The nearest surface along `ray` that rays of `kind` see.
+    pub(crate) fn first_hit(&mut self, ray: &Ray, kind: RayKind) -> Option<Hit<'w>> {
+        let q = Query::new(*ray, kind, self.tolerance(ray.origin), f64::INFINITY);
+        self.world.bvh.nearest(&q, &mut self.scratch)
+    }
+
+    pub(crate) fn shade(&mut self, ray: &Ray, hit: &Hit<'w>, level: u32, weight: f64) -> Sample {
         let p = ray.at(hit.t);
         let leaf: &'w Leaf = hit.leaf;
         let mut normal = leaf.normal(p, hit.part);
@@ -193,6 +210,7 @@ impl<'w> Tracer<'w> {
             return Sample::new(top, 0.0);
         }
         let relative_ior = self.relative_ior(&leaf.interior);
+        let mut indirect = crate::radiosity::Indirect::new(p, raw_normal, level);
         let mut colour = DVec3::ZERO;
         // What the layers so far let through, and how much of it counts.
         let mut filter = DVec3::ONE;
@@ -225,9 +243,11 @@ impl<'w> Tracer<'w> {
             let exponent = finish.reflection.as_ref().map_or(1.0, |r| r.exponent);
             reflections.push((reflectivity, normal, exponent));
 
-            let mut own =
-                pigment.rgb * (finish.ambient * world.ambient_light + finish.emission) * opacity;
-            for light in world.lights_for(leaf) {
+            let ambient = self.ambient(finish, pigment.rgb, normal, opacity, &mut indirect);
+            let mut own = pigment.rgb * (ambient + finish.emission) * opacity;
+            // The pretrace wants only the radiosity samples a camera ray's path takes.
+            let vain_pretrace = self.vain_pretrace();
+            for light in world.lights_for(leaf).filter(|_| !vain_pretrace) {
                 own += self.direct_light(
                     light,
                     p,
@@ -345,8 +365,9 @@ impl<'w> Tracer<'w> {
             }
             colour += light_colour * surface * intensity;
         }
-        // POV-Ray's shadowless (fill) lights and backside light cause no highlights.
-        if light.shadowless || backside {
+        // POV-Ray's shadowless (fill) lights and backside light cause no highlights, and
+        // radiosity rays see none.
+        if light.shadowless || backside || self.in_radiosity_ray() {
             return self.iridescent(colour, finish, p, normal, ray, incoming.direction);
         }
         if finish.phong > 0.0 {
@@ -717,7 +738,8 @@ impl AreaSampler<'_> {
     }
 }
 
-fn hash3(p: DVec3, u: i32, v: i32) -> u64 {
+/// A hash of a point and two grid indices, for pseudo-random choices that repeat.
+pub(crate) fn hash3(p: DVec3, u: i32, v: i32) -> u64 {
     let mut h = 0xcbf2_9ce4_8422_2325u64;
     for x in [
         p.x.to_bits(),

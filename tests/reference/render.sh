@@ -2,7 +2,12 @@
 # Renders the reference images of the fidelity scenes listed in scenes.txt with Debian's
 # POV-Ray 3.7, one thread (+WT1), at each scene's settings, into png/NAME.png, and records
 # POV-Ray's own parse and trace times in povray-times.txt for the benchmark: the CPU
-# seconds it reports, which other work on the machine disturbs less than wall time.
+# seconds it reports, which other work on the machine disturbs less than wall time (the
+# trace time includes the radiosity pretrace, which POV-Ray reports apart).
+#
+# Scenes that include standard include files get ours (analysis/stdinc), not POV-Ray's:
+# the designs in them are our own, and the references must show what our files describe.
+# An empty POVINI keeps POV-Ray's library path out.
 #
 #   tests/reference/render.sh            every scene
 #   tests/reference/render.sh basic csg  only these
@@ -23,7 +28,8 @@ mkdir -p "$here/png"
 times="$here/povray-times.txt"
 [ -f "$times" ] || echo "# scene parse_cpu_seconds trace_cpu_seconds (povray +WT1)" > "$times"
 log="$(mktemp)"
-trap 'rm -f "$log"' EXIT
+no_ini="$(mktemp --suffix=.ini)"
+trap 'rm -f "$log" "$no_ini"' EXIT
 
 while read -r line; do
     line="${line%%|*}"
@@ -33,11 +39,13 @@ while read -r line; do
         continue
     fi
     # shellcheck disable=SC2086 # the options are separate words on purpose
-    povray "+I$root/$scene" "+O$here/png/$name.png" +FN -D -V +WT1 $options \
-        "+L$(dirname "$root/$scene")" >"$log" 2>&1 || { cat "$log" >&2; exit 1; }
-    # The CPU seconds follow each "Parse Time" and "Trace Time" line.
-    parse=$(grep -A1 -m1 'Parse Time:' "$log" | sed -nE 's/.* ([0-9.]+) CPU-seconds.*/\1/p')
-    trace=$(grep -A1 -m1 'Trace Time:' "$log" | sed -nE 's/.* ([0-9.]+) CPU-seconds.*/\1/p')
+    POVINI="$no_ini" povray "+I$root/$scene" "+O$here/png/$name.png" +FN -D -V +WT1 $options \
+        "+L$(dirname "$root/$scene")" "+L$root/analysis/stdinc" >"$log" 2>&1 || { cat "$log" >&2; exit 1; }
+    # The CPU seconds follow each "Parse Time", "Radiosity Time" and "Trace Time" line.
+    cpu() { grep -A1 -m1 "$1" "$log" | sed -nE 's/.* ([0-9.]+) CPU-seconds.*/\1/p'; }
+    parse=$(cpu 'Parse Time:')
+    radiosity=$(cpu 'Radiosity Time:')
+    trace=$(awk -v t="$(cpu 'Trace Time:')" -v r="${radiosity:-0}" 'BEGIN { printf "%.3f", t + r }')
     grep -v "^$name " "$times" > "$times.new" || true
     echo "$name $parse $trace" >> "$times.new"
     mv "$times.new" "$times"

@@ -2,7 +2,7 @@
 //! `tests/reference/scenes.txt` (references made by `tests/reference/render.sh`).
 
 use tests::fidelity::manifest;
-use tests::image_compare::{Picture, compare};
+use tests::image_compare::{Picture, compare, compare_blurred};
 
 /// `FIDELITY_ONLY=prefix,...` narrows the run to the scenes whose names start with one of
 /// the prefixes, for working on a few of them; unset, every scene is compared.
@@ -24,7 +24,7 @@ fn renders_match_povray() {
                 continue;
             }
         };
-        match compare(&reference, &ours) {
+        match compare_blurred(&reference, &ours, scene.thresholds.blur) {
             Ok(d) => {
                 eprintln!("{:<16} {d}", scene.name);
                 if let Err(e) = scene.thresholds.check(&d) {
@@ -54,6 +54,32 @@ fn wrong_renders_fail_the_thresholds() {
         let wrong = basic.render_with(&source.replace(from, to)).unwrap();
         let d = compare(&reference, &wrong).unwrap();
         assert!(basic.thresholds.check(&d).is_err(), "{what} passes: {d}");
+    }
+}
+
+/// The radiosity thresholds, loose as stochastic light needs, still catch wrong light: the
+/// Cornell box with one bounce fewer, or with its indirect light 10 % dimmer, fails.
+#[test]
+fn wrong_radiosity_fails_the_thresholds() {
+    let scenes = manifest();
+    let cornell = scenes
+        .iter()
+        .find(|s| s.name == "radiosity-cornell")
+        .unwrap();
+    let reference = Picture::read(&cornell.reference_png()).unwrap();
+    let source = cornell.source();
+    let from = "radiosity { count 60 }";
+    assert!(
+        source.contains(from),
+        "radiosity-cornell.pov no longer has `{from}`"
+    );
+    for (what, to) in [
+        ("one bounce", "radiosity { count 60 recursion_limit 1 }"),
+        ("dimmer", "radiosity { count 60 brightness 0.9 }"),
+    ] {
+        let wrong = cornell.render_with(&source.replace(from, to)).unwrap();
+        let d = compare_blurred(&reference, &wrong, cornell.thresholds.blur).unwrap();
+        assert!(cornell.thresholds.check(&d).is_err(), "{what} passes: {d}");
     }
 }
 

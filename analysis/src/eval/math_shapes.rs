@@ -261,7 +261,7 @@ impl Evaluator<'_> {
     }
 
     /// A float that must be greater than zero.
-    fn positive(&mut self, keyword: &Token, what: &str) -> Result<f64> {
+    pub(super) fn positive(&mut self, keyword: &Token, what: &str) -> Result<f64> {
         let v = self.float()?;
         if v > 0.0 && v.is_finite() {
             Ok(v)

@@ -28,6 +28,7 @@ mod object;
 mod pattern_head;
 mod photons;
 mod polygon;
+mod radiosity;
 mod rng;
 mod scene_items;
 mod spline;
@@ -231,6 +232,8 @@ pub(crate) struct Evaluator<'a> {
     media: Vec<Arc<crate::scene::Media>>,
     settings: GlobalSettings,
     default_texture: Texture,
+    /// `#default { radiosity { importance } }`: for objects placed from now on.
+    default_importance: f64,
 }
 
 impl<'a> Evaluator<'a> {
@@ -271,6 +274,7 @@ impl<'a> Evaluator<'a> {
             media: Vec::new(),
             settings: GlobalSettings::default(),
             default_texture: Texture::default(),
+            default_importance: 1.0,
         }
     }
 

@@ -392,7 +392,7 @@ impl Evaluator<'_> {
                     self.object_photons(&mut object.photons)?;
                     super::photons::spread_to_parts(object);
                 }
-                RADIOSITY_KW => self.skip_braced_block(&token)?,
+                RADIOSITY_KW => self.object_radiosity(object)?,
                 SPLIT_UNION_KW => object.photons.split_union = self.optional_bool()?,
                 CUTAWAY_TEXTURES_KW => {}
                 _ => {
@@ -573,6 +573,7 @@ impl Evaluator<'_> {
     /// Adds a finished top-level object to the scene; lights inside CSG join the scene's.
     pub fn add_object(&mut self, mut object: Object) {
         collect_lights(&mut object, &mut self.lights);
+        super::radiosity::place_with_importance(&mut object, self.default_importance);
         self.objects.push(object);
     }
 }

@@ -109,13 +109,11 @@ impl Evaluator<'_> {
                     self.float()?;
                 }
                 MM_PER_UNIT_KW => {
-                    self.float()?;
+                    self.settings.mm_per_unit = self.positive(&token, "mm_per_unit")?
                 }
                 PHOTONS_KW => self.settings.photons = Some(self.global_photons(&token)?),
-                RADIOSITY_KW => {
-                    return Err(self.unsupported(&token, "radiosity"));
-                }
-                SUBSURFACE_KW => return Err(self.unsupported(&token, "subsurface")),
+                RADIOSITY_KW => self.global_radiosity()?,
+                SUBSURFACE_KW => self.global_subsurface()?,
                 _ => {
                     return Err(self.error_at(
                         &token,

@@ -986,7 +986,7 @@ impl Evaluator<'_> {
                 }
                 CONSERVE_ENERGY_KW => finish.conserve_energy = self.optional_bool()?,
                 IRID_KW => finish.irid = Some(self.irid()?),
-                SUBSURFACE_KW => return Err(self.unsupported(&token, "subsurface")),
+                SUBSURFACE_KW => finish.translucency = Some(self.translucency()?),
                 _ => {
                     return Err(self.error_at(
                         &token,
@@ -1108,6 +1108,7 @@ impl Evaluator<'_> {
             match token.kind {
                 R_BRACE => return Ok(()),
                 TEXTURE_KW => self.default_texture = self.texture_body()?,
+                RADIOSITY_KW => self.default_radiosity()?,
                 PIGMENT_KW | NORMAL_KW | FINISH_KW => {
                     let Texture::Plain {
                         pigment,
@@ -1135,7 +1136,7 @@ impl Evaluator<'_> {
                 _ => return Err(self.error_at(
                     &token,
                     format!(
-                        "expected texture, pigment, normal, finish or '}}' in #default, found {}",
+                        "expected texture, pigment, normal, finish, radiosity or '}}' in #default, found {}",
                         self.describe(&token)
                     ),
                 )),

@@ -24,7 +24,7 @@ pub use light::{AreaLight, Light, LightGroup, LightKind};
 pub use media::{Media, Scattering, ScatteringKind};
 pub use object::{CsgOp, Interior, Object, ObjectFlags, Shape};
 pub use photons::{LightPhotons, ObjectPhotons, PhotonDensity, Photons};
-pub use settings::{GlobalSettings, Radiosity};
+pub use settings::{GlobalSettings, Radiosity, Subsurface};
 pub use texture::{
     BlendMap, Finish, Fractal, FractalKind, Normal, NormalKind, Pattern, PatternKind, Pigment,
     Reflection, Texture, Turbulence, Warp, WaveType,

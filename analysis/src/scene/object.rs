@@ -166,6 +166,9 @@ pub struct Object {
     pub interior: Option<Arc<Interior>>,
     pub flags: ObjectFlags,
     pub photons: ObjectPhotons,
+    /// `radiosity { importance }`: the share of radiosity rays that meet this object and
+    /// are followed. `None` takes the enclosing CSG's, or the default's.
+    pub radiosity_importance: Option<f64>,
     pub clipped_by: Vec<Object>,
     pub bounded_by: Vec<Object>,
     pub origin: Origin,
@@ -181,6 +184,7 @@ impl Object {
             interior: None,
             flags: ObjectFlags::default(),
             photons: ObjectPhotons::default(),
+            radiosity_importance: None,
             clipped_by: Vec::new(),
             bounded_by: Vec::new(),
             origin,

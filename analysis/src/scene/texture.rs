@@ -266,6 +266,8 @@ pub struct Finish {
     pub reflection: Option<Reflection>,
     pub irid: Option<(f64, f64, f64)>,
     pub conserve_energy: bool,
+    /// `subsurface { translucency }`: how strongly light scatters under the surface.
+    pub translucency: Option<DVec3>,
 }
 
 impl Default for Finish {
@@ -286,6 +288,7 @@ impl Default for Finish {
             reflection: None,
             irid: None,
             conserve_energy: false,
+            translucency: None,
         }
     }
 }

@@ -12,9 +12,10 @@ use glam::DVec3;
 impl<'w> Tracer<'w> {
     /// What a ray sees when it meets nothing: the sky sphere over the background, or the
     /// background.
-    pub(super) fn missed(&self, ray: &Ray, kind: RayKind) -> Sample {
+    pub(crate) fn missed(&self, ray: &Ray, kind: RayKind) -> Sample {
         let world = self.world;
-        let reflected = kind == RayKind::Reflected;
+        // Radiosity rays see the sky as reflections do.
+        let reflected = matches!(kind, RayKind::Reflected | RayKind::Radiosity);
         let background = if reflected {
             Sample::new(world.reflected_background, 0.0)
         } else {
@@ -32,7 +33,7 @@ impl<'w> Tracer<'w> {
     /// nothing) through the media of the containers the ray is in, the atmospheric media,
     /// rainbows and fogs. Inside a solid (not hollow) object none of them shows, as in
     /// POV-Ray, where even a solid container's own media stay dark.
-    pub(super) fn participate(&mut self, ray: &Ray, depth: f64, sample: Sample) -> Sample {
+    pub(crate) fn participate(&mut self, ray: &Ray, depth: f64, sample: Sample) -> Sample {
         let world = self.world;
         let length = ray.direction.length();
         if length == 0.0 {

@@ -1,0 +1,350 @@
+//! The irradiance cache: indirect light measured at sample points, and its interpolation
+//! at points near them (Ward, Rubinstein and Clear 1988, "A ray tracing solution for
+//! diffuse interreflection").
+//!
+//! A sample may stand in for a point `x` with normal `n` while its estimated error
+//! `εᵢ = |x - xᵢ| / Rᵢ + √(1 - n·nᵢ)` stays below the error bound, `Rᵢ` being the
+//! sample's reuse distance (the harmonic mean of the distances its rays went, within the
+//! reuse limits). Samples are blended with weights `(1 - εᵢ/bound)²`, which fall smoothly
+//! to zero at the edge of each sample's reach: the blend has no seams where a sample drops
+//! out, and no single noisy sample dominates the points around it.
+//!
+//! Samples live in a loose octree: each in the smallest cell that holds its position and
+//! is at least as wide as its reach, so a lookup visits only the cells whose doubled
+//! extent holds the point.
+
+use glam::DVec3;
+
+/// One measurement of indirect light.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sample {
+    pub position: DVec3,
+    pub normal: DVec3,
+    pub irradiance: DVec3,
+    /// The reuse distance `R`.
+    pub reuse: f64,
+}
+
+/// What a lookup found: the blended light and how well the samples cover the point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Blend {
+    pub irradiance: DVec3,
+    /// The number of samples found, each weighed by how close it is: a sample at the edge
+    /// of its reach counts a half, one very close counts up to four, after the manual's
+    /// description of `nearest_count`.
+    pub coverage: f64,
+}
+
+#[derive(Debug, Clone)]
+struct Cell {
+    centre: DVec3,
+    half: f64,
+    children: [u32; 8],
+    spots: Spots,
+}
+
+/// Where a cell's samples are and how far they reach, in single precision relative to the
+/// cell's centre and side by side, so that a lookup turns most of them away with a few
+/// vector instructions before looking at a sample itself.
+#[derive(Debug, Clone, Default)]
+struct Spots {
+    x: Vec<f32>,
+    y: Vec<f32>,
+    z: Vec<f32>,
+    reuse: Vec<f32>,
+    sample: Vec<u32>,
+}
+
+/// How many spots the prefilter tests at once.
+const CHUNK: usize = 32;
+
+impl Spots {
+    fn push(&mut self, offset: DVec3, reuse: f64, sample: u32) {
+        self.x.push(offset.x as f32);
+        self.y.push(offset.y as f32);
+        self.z.push(offset.z as f32);
+        self.reuse.push(reuse as f32);
+        self.sample.push(sample);
+    }
+
+    /// Calls `f` with each sample that may lie within `bound` reuse distances of the
+    /// point at `offset` from the cell's centre (`slack` covers single precision).
+    fn near(&self, offset: DVec3, bound: f64, slack: f64, mut f: impl FnMut(u32)) {
+        let (qx, qy, qz) = (offset.x as f32, offset.y as f32, offset.z as f32);
+        let (b, slack) = (bound as f32 * 1.001, slack as f32);
+        let mut start = 0;
+        while start < self.sample.len() {
+            let end = (start + CHUNK).min(self.sample.len());
+            let mut near = [false; CHUNK];
+            let lanes = self.x[start..end]
+                .iter()
+                .zip(&self.y[start..end])
+                .zip(&self.z[start..end])
+                .zip(&self.reuse[start..end]);
+            for (hit, (((x, y), z), reuse)) in near.iter_mut().zip(lanes) {
+                let (dx, dy, dz) = (x - qx, y - qy, z - qz);
+                let reach = b * reuse + slack;
+                *hit = dx * dx + dy * dy + dz * dz <= reach * reach;
+            }
+            for (k, &hit) in near[..end - start].iter().enumerate() {
+                if hit {
+                    f(self.sample[start + k]);
+                }
+            }
+            start = end;
+        }
+    }
+}
+
+impl Cell {
+    fn new(centre: DVec3, half: f64) -> Cell {
+        Cell {
+            centre,
+            half,
+            children: [NONE; 8],
+            spots: Spots::default(),
+        }
+    }
+
+    /// Whether a sample of this cell may reach `p` when reaches are `stretch` times those
+    /// the cell was chosen for: the cell holds its samples' positions, and their reaches
+    /// are at most its half-size.
+    fn may_reach(&self, p: DVec3, stretch: f64) -> bool {
+        (p - self.centre).abs().max_element() <= self.half * (1.0 + stretch)
+    }
+
+    fn octant(&self, p: DVec3) -> usize {
+        usize::from(p.x > self.centre.x)
+            | usize::from(p.y > self.centre.y) << 1
+            | usize::from(p.z > self.centre.z) << 2
+    }
+}
+
+const NONE: u32 = u32::MAX;
+
+/// The samples of one bounce depth.
+#[derive(Debug, Clone, Default)]
+pub struct Cache {
+    cells: Vec<Cell>,
+    samples: Vec<Sample>,
+    root: u32,
+    /// A sample's cell is chosen for a reach of its reuse distance times this bound;
+    /// lookups under larger bounds search further.
+    reference_bound: f64,
+}
+
+impl Cache {
+    pub fn new(reference_bound: f64) -> Cache {
+        Cache {
+            cells: Vec::new(),
+            samples: Vec::new(),
+            root: NONE,
+            reference_bound,
+        }
+    }
+
+    #[cfg(test)]
+    pub fn len(&self) -> usize {
+        self.samples.len()
+    }
+
+    pub fn insert(&mut self, sample: Sample) {
+        let reach = sample.reuse * self.reference_bound;
+        let index = self.samples.len() as u32;
+        self.samples.push(sample);
+        if self.root == NONE {
+            self.root = self.cells.len() as u32;
+            let half = if reach > 0.0 { reach } else { 1.0 };
+            self.cells.push(Cell::new(sample.position, half));
+        }
+        self.grow_to(sample.position, reach);
+        let mut at = self.root as usize;
+        // Down to the smallest cell still as wide as the sample's reach; the limit stops
+        // degenerate reaches from building towers of cells.
+        for _ in 0..64 {
+            let (centre, half) = (self.cells[at].centre, self.cells[at].half / 2.0);
+            if half < reach {
+                break;
+            }
+            let octant = self.cells[at].octant(sample.position);
+            at = match self.cells[at].children[octant] {
+                NONE => {
+                    let offset = DVec3::new(
+                        if octant & 1 != 0 { half } else { -half },
+                        if octant & 2 != 0 { half } else { -half },
+                        if octant & 4 != 0 { half } else { -half },
+                    );
+                    let new = self.cells.len() as u32;
+                    self.cells.push(Cell::new(centre + offset, half));
+                    self.cells[at].children[octant] = new;
+                    new as usize
+                }
+                child => child as usize,
+            };
+        }
+        let offset = sample.position - self.cells[at].centre;
+        self.cells[at].spots.push(offset, sample.reuse, index);
+    }
+
+    /// Enlarges the root until it holds `p` and is at least as wide as `reach`.
+    fn grow_to(&mut self, p: DVec3, reach: f64) {
+        loop {
+            let root = &self.cells[self.root as usize];
+            let inside = (p - root.centre).abs().max_element() <= root.half;
+            if inside && root.half >= reach {
+                return;
+            }
+            // The new root doubles the old one towards `p`; the old root is the octant of
+            // it on the other side.
+            let towards = DVec3::select(p.cmpge(root.centre), DVec3::ONE, -DVec3::ONE);
+            let centre = root.centre + towards * root.half;
+            let mut grown = Cell::new(centre, root.half * 2.0);
+            let old_octant = grown.octant(root.centre);
+            grown.children[old_octant] = self.root;
+            self.root = self.cells.len() as u32;
+            self.cells.push(grown);
+        }
+    }
+
+    /// The samples that may stand in for `(p, n)` under `bound`, blended.
+    pub fn lookup(&self, p: DVec3, n: DVec3, bound: f64) -> Blend {
+        let mut sums = Sums::default();
+        if self.root != NONE {
+            let stretch = bound / self.reference_bound;
+            self.visit(self.root, p, n, bound, stretch, &mut sums);
+        }
+        Blend {
+            irradiance: if sums.weights > 0.0 {
+                sums.light / sums.weights
+            } else {
+                DVec3::ZERO
+            },
+            coverage: sums.coverage,
+        }
+    }
+
+    fn visit(&self, at: u32, p: DVec3, n: DVec3, bound: f64, stretch: f64, sums: &mut Sums) {
+        let cell = &self.cells[at as usize];
+        if !cell.may_reach(p, stretch) {
+            return;
+        }
+        let slack = 1e-5 * cell.half;
+        cell.spots.near(p - cell.centre, bound, slack, |i| {
+            let s = &self.samples[i as usize];
+            if let Some((weight, quality)) = fit(s, p, n, bound) {
+                sums.light += s.irradiance * weight;
+                sums.weights += weight;
+                sums.coverage += (quality / 2.0).min(4.0);
+            }
+        });
+        for &child in &cell.children {
+            if child != NONE {
+                self.visit(child, p, n, bound, stretch, sums);
+            }
+        }
+    }
+}
+
+#[derive(Default)]
+struct Sums {
+    light: DVec3,
+    weights: f64,
+    coverage: f64,
+}
+
+/// The blending weight of sample `s` at `(p, n)` and the ratio of the bound to its error,
+/// or `None` when it may not stand in for the point.
+fn fit(s: &Sample, p: DVec3, n: DVec3, bound: f64) -> Option<(f64, f64)> {
+    let offset = p - s.position;
+    let reach = bound * s.reuse;
+    if offset.length_squared() >= reach * reach {
+        return None;
+    }
+    let distance = offset.length();
+    let error = distance / s.reuse + (1.0 - n.dot(s.normal)).max(0.0).sqrt();
+    if error >= bound {
+        return None;
+    }
+    // A sample in front of the point's tangent plane saw light the point may not see.
+    if offset.dot(n + s.normal) < -0.1 * s.reuse {
+        return None;
+    }
+    let falloff = 1.0 - error / bound;
+    Some((falloff * falloff, bound / error.max(1e-9)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sample(x: f64, light: f64) -> Sample {
+        Sample {
+            position: DVec3::new(x, 0.0, 0.0),
+            normal: DVec3::Y,
+            irradiance: DVec3::splat(light),
+            reuse: 1.0,
+        }
+    }
+
+    #[test]
+    fn a_point_between_two_samples_blends_them_by_closeness() {
+        let mut cache = Cache::new(1.0);
+        cache.insert(sample(0.0, 1.0));
+        cache.insert(sample(1.0, 3.0));
+        let halfway = cache.lookup(DVec3::new(0.5, 0.0, 0.0), DVec3::Y, 1.0);
+        assert!((halfway.irradiance.x - 2.0).abs() < 1e-12, "{halfway:?}");
+        let near_first = cache.lookup(DVec3::new(0.2, 0.0, 0.0), DVec3::Y, 1.0);
+        assert!(near_first.irradiance.x < 1.2, "{near_first:?}");
+        assert!(near_first.coverage > halfway.coverage / 2.0);
+    }
+
+    #[test]
+    fn samples_out_of_reach_turned_away_or_in_front_are_not_used() {
+        let mut cache = Cache::new(1.0);
+        cache.insert(sample(0.0, 1.0));
+        let far = cache.lookup(DVec3::new(1.5, 0.0, 0.0), DVec3::Y, 1.0);
+        assert_eq!(far.coverage, 0.0);
+        let turned = cache.lookup(DVec3::new(0.1, 0.0, 0.0), DVec3::X, 1.0);
+        assert_eq!(turned.coverage, 0.0);
+        // A point below the sample's surface, as on a step down from it.
+        let below = cache.lookup(DVec3::new(0.0, -0.3, 0.0), DVec3::Y, 1.0);
+        assert_eq!(below.coverage, 0.0);
+        // A looser bound reaches further.
+        assert!(
+            cache
+                .lookup(DVec3::new(1.5, 0.0, 0.0), DVec3::Y, 2.0)
+                .coverage
+                > 0.0
+        );
+    }
+
+    #[test]
+    fn the_octree_finds_samples_of_every_size_anywhere() {
+        // Samples of reaches from 0.01 to 100 scattered over a large region, each found
+        // from a point near it, and the lookup agrees with a search of every sample.
+        let mut cache = Cache::new(1.8);
+        let mut all = Vec::new();
+        for i in 0..500u32 {
+            let f = f64::from(i);
+            let s = Sample {
+                position: DVec3::new((f * 7.31).sin() * 500.0, (f * 3.17).cos() * 50.0, f),
+                normal: DVec3::Y,
+                irradiance: DVec3::splat(f),
+                reuse: 10f64.powf((f * 0.37).sin() * 2.0),
+            };
+            cache.insert(s);
+            all.push(s);
+        }
+        for (i, s) in all.iter().enumerate() {
+            let p = s.position + DVec3::new(0.3, 0.0, 0.2) * s.reuse;
+            let found = cache.lookup(p, DVec3::Y, 1.8);
+            let expected: f64 = all
+                .iter()
+                .filter_map(|s| fit(s, p, DVec3::Y, 1.8))
+                .map(|(_, q)| (q / 2.0).min(4.0))
+                .sum();
+            assert!(found.coverage > 0.0, "sample {i} not found");
+            assert!((found.coverage - expected).abs() < 1e-9, "sample {i}");
+        }
+    }
+}

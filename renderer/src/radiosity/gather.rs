@@ -1,0 +1,385 @@
+//! Indirect light at a surface point: from the cache when its samples cover the point,
+//! otherwise gathered by `count` rays over the hemisphere and, while the cache is being
+//! filled, kept as a new sample.
+
+use super::Radiosity;
+use super::cache::{Cache, Sample};
+use crate::colour;
+use crate::object::Leaf;
+use crate::ray::{Ray, RayKind};
+use crate::tracer::{Tracer, greyscale, hash3};
+use analysis::scene::Finish;
+use glam::DVec3;
+
+/// How much looser the error bound may grow with each diffuse bounce.
+const LOOSEST_PER_BOUNCE: f64 = 4.0;
+
+/// What a tracer does with the cache.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Phase {
+    /// A pretrace pass: a point whose samples cover it less than `nearest_count` times
+    /// (under the lowered error bound) gets a new sample.
+    Pretrace,
+    /// The last pass before the picture, one ray per pixel: a point no sample covers gets
+    /// one; with `always_sample` on, as in a pretrace pass but under the full bound.
+    Fill,
+    /// The picture: the cache is only read. A point no sample covers (one the fill pass
+    /// did not reach, between pixels) gathers its light without keeping it.
+    Picture,
+}
+
+#[derive(Debug)]
+enum Caches<'w> {
+    Reading(&'w [Cache]),
+    Filling(Vec<Cache>),
+}
+
+/// A tracer's radiosity state: the cache, the phase, and how deep in diffuse bounces the
+/// ray being traced is.
+#[derive(Debug)]
+pub struct Walk<'w> {
+    radiosity: &'w Radiosity,
+    caches: Caches<'w>,
+    pub(super) phase: Phase,
+    /// How many diffuse bounces lie between the camera and the current ray.
+    bounce: u32,
+    /// The point now gathering and its distance from the eye along the path.
+    gatherer: DVec3,
+    gatherer_distance: f64,
+    /// The product of the diffuse reflectances of the points gathering above the current
+    /// ray: the share of its light that reaches the picture.
+    path_weight: f64,
+    /// The lowest coverage a camera-path lookup found since the pretrace last reset it,
+    /// for the adaptive pretrace.
+    pub(super) weakest: f64,
+}
+
+impl<'w> Walk<'w> {
+    /// For the picture, reading the samples the pretrace took.
+    pub fn rendering(radiosity: &'w Radiosity) -> Walk<'w> {
+        Walk::new(
+            radiosity,
+            Caches::Reading(&radiosity.caches),
+            Phase::Picture,
+        )
+    }
+
+    /// For the pretrace, filling `caches`.
+    pub(super) fn filling(radiosity: &'w Radiosity, caches: Vec<Cache>) -> Walk<'w> {
+        Walk::new(radiosity, Caches::Filling(caches), Phase::Pretrace)
+    }
+
+    fn new(radiosity: &'w Radiosity, caches: Caches<'w>, phase: Phase) -> Walk<'w> {
+        Walk {
+            radiosity,
+            caches,
+            phase,
+            bounce: 0,
+            gatherer: DVec3::ZERO,
+            gatherer_distance: 0.0,
+            path_weight: 1.0,
+            weakest: f64::INFINITY,
+        }
+    }
+
+    pub(super) fn radiosity_settings(&self) -> &'w analysis::scene::Radiosity {
+        &self.radiosity.settings
+    }
+
+    /// The filled caches.
+    pub(super) fn into_caches(self) -> Vec<Cache> {
+        match self.caches {
+            Caches::Filling(caches) => caches,
+            Caches::Reading(caches) => caches.to_vec(),
+        }
+    }
+
+    fn cache(&self, bounce: u32) -> &Cache {
+        match &self.caches {
+            Caches::Reading(c) => &c[bounce as usize],
+            Caches::Filling(c) => &c[bounce as usize],
+        }
+    }
+
+    /// The error bound of this phase at the current bounce, and the coverage a point needs
+    /// to do without a new sample. Light gathered deeper reaches the picture only through
+    /// the reflectance of the points that gathered it, so its error may be larger in
+    /// proportion, up to [`LOOSEST_PER_BOUNCE`] times per bounce.
+    fn rule(&self) -> (f64, f64) {
+        let s = &self.radiosity.settings;
+        let nearest = f64::from(s.nearest_count);
+        let (bound, needed) = match self.phase {
+            Phase::Pretrace => (self.radiosity.pretrace_bound(), nearest),
+            Phase::Fill if s.always_sample => (s.error_bound, nearest),
+            Phase::Fill | Phase::Picture => (s.error_bound, f64::MIN_POSITIVE),
+        };
+        let loosest = LOOSEST_PER_BOUNCE.powi(self.bounce as i32);
+        ((bound / self.path_weight).min(bound * loosest), needed)
+    }
+}
+
+/// The indirect light of one shading point, gathered at most once however many texture
+/// layers use it.
+#[derive(Debug, Clone, Copy)]
+pub struct Indirect {
+    point: DVec3,
+    /// The surface's own normal, before any normal perturbation.
+    normal: DVec3,
+    level: u32,
+    light: Option<DVec3>,
+}
+
+impl Indirect {
+    pub fn new(point: DVec3, normal: DVec3, level: u32) -> Indirect {
+        Indirect {
+            point,
+            normal,
+            level,
+            light: None,
+        }
+    }
+}
+
+impl<'w> Tracer<'w> {
+    /// The light a finish layer receives besides the light sources, to be multiplied by
+    /// its pigment: `ambient` times `ambient_light` without radiosity; with it, the
+    /// gathered light times `diffuse`, plus, in legacy scenes, the ambient glow.
+    pub(crate) fn ambient(
+        &mut self,
+        finish: &Finish,
+        pigment: DVec3,
+        layer_normal: DVec3,
+        opacity: f64,
+        indirect: &mut Indirect,
+    ) -> DVec3 {
+        let classic = finish.ambient * self.world.ambient_light;
+        let Some(walk) = &self.radiosity else {
+            return classic;
+        };
+        let radiosity = walk.radiosity;
+        let glow = if radiosity.legacy_ambient {
+            classic
+        } else {
+            DVec3::ZERO
+        };
+        if finish.diffuse == 0.0 || opacity <= 0.0 {
+            return glow;
+        }
+        let light = match indirect.light {
+            Some(light) => light,
+            None => {
+                let normal = if radiosity.settings.normal {
+                    layer_normal
+                } else {
+                    indirect.normal
+                };
+                let reflectance = finish.diffuse * greyscale(pigment) * opacity;
+                let light = self.irradiance(indirect.point, normal, indirect.level, reflectance);
+                indirect.light = Some(light);
+                light
+            }
+        };
+        glow + light * finish.diffuse
+    }
+
+    /// What a gathering ray brings back from `depth` along it, through media and fog when
+    /// radiosity's `media` is on (it is off by default: radiosity rays see none).
+    fn through_media(&mut self, ray: &Ray, depth: f64, sample: colour::Sample) -> colour::Sample {
+        let media = self
+            .radiosity
+            .as_ref()
+            .is_some_and(|w| w.radiosity.settings.media);
+        if media && self.world.participating {
+            self.participate(ray, depth, sample)
+        } else {
+            sample
+        }
+    }
+
+    /// Whether the current ray is a pretrace camera ray, whose own colour nobody sees.
+    pub(crate) fn vain_pretrace(&self) -> bool {
+        self.radiosity
+            .as_ref()
+            .is_some_and(|w| w.phase != Phase::Picture && w.bounce == 0)
+    }
+
+    /// Whether the current ray gathers radiosity, and so sees no highlights.
+    pub(crate) fn in_radiosity_ray(&self) -> bool {
+        self.radiosity.as_ref().is_some_and(|w| w.bounce > 0)
+    }
+
+    /// The light arriving at `p` around `n`, from the cache or gathered, for a surface
+    /// reflecting `reflectance` of it.
+    fn irradiance(&mut self, p: DVec3, n: DVec3, level: u32, reflectance: f64) -> DVec3 {
+        let Some(walk) = &mut self.radiosity else {
+            return DVec3::ZERO;
+        };
+        let radiosity = walk.radiosity;
+        let bounce = walk.bounce;
+        if bounce >= radiosity.settings.recursion_limit {
+            return DVec3::ZERO;
+        }
+        let eye_distance = if bounce == 0 {
+            (p - radiosity.eye).length()
+        } else {
+            walk.gatherer_distance + (p - walk.gatherer).length()
+        };
+        let (bound, needed) = walk.rule();
+        let found = walk.cache(bounce).lookup(p, n, bound);
+        if bounce == 0 {
+            walk.weakest = walk.weakest.min(found.coverage);
+        }
+        if found.coverage >= needed {
+            return found.irradiance;
+        }
+        let sample = self.gather(p, n, level, eye_distance, reflectance);
+        if let Some(Walk {
+            caches: Caches::Filling(caches),
+            ..
+        }) = &mut self.radiosity
+        {
+            caches[bounce as usize].insert(sample);
+        }
+        sample.irradiance
+    }
+
+    /// A new sample at `p`: the mean light of `count` rays over the hemisphere about `n`,
+    /// and its reuse distance.
+    fn gather(
+        &mut self,
+        p: DVec3,
+        n: DVec3,
+        level: u32,
+        eye_distance: f64,
+        reflectance: f64,
+    ) -> Sample {
+        let world = self.world;
+        let Some(walk) = &mut self.radiosity else {
+            unreachable!("gathering needs radiosity");
+        };
+        let radiosity: &'w Radiosity = walk.radiosity;
+        let settings = &radiosity.settings;
+        let saved = (walk.gatherer, walk.gatherer_distance, walk.path_weight);
+        walk.bounce += 1;
+        walk.gatherer = p;
+        walk.gatherer_distance = eye_distance;
+        walk.path_weight *= reflectance.abs();
+        let key = hash3(p, walk.bounce as i32, 0);
+
+        // Rays below radiosity's own adc_bailout are not followed: the tracer compares
+        // weights with the scene's, so the weight starts at the ratio of the two.
+        let weight = (world.adc_bailout / settings.adc_bailout).min(1.0);
+        let (t, b) = n.any_orthonormal_pair();
+        let count = radiosity.directions.count();
+        let mut inverse_distances = 0.0;
+        let mut total = DVec3::ZERO;
+        let mut shares = ObjectShares::default();
+        for (i, d) in radiosity.directions.gather(key).enumerate() {
+            let ray = Ray::new(p, t * d.x + b * d.y + n * d.z);
+            let Some(hit) = self.first_hit(&ray, RayKind::Radiosity) else {
+                let sky = self.missed(&ray, RayKind::Radiosity);
+                let sky = self.through_media(&ray, f64::INFINITY, sky);
+                total += limit(sky.colour, settings.max_sample);
+                continue;
+            };
+            inverse_distances += 1.0 / hit.t;
+            let object = if radiosity.uses_importance {
+                let share = hit.leaf.importance * count as f64;
+                match shares.meet(hit.leaf, i, share) {
+                    Some(object) => Some(object),
+                    None => continue,
+                }
+            } else {
+                None
+            };
+            let light = if level < world.max_trace_level {
+                let shaded = self.shade(&ray, &hit, level + 1, weight);
+                limit(
+                    self.through_media(&ray, hit.t, shaded).colour,
+                    settings.max_sample,
+                )
+            } else {
+                DVec3::ZERO
+            };
+            match object {
+                Some(object) => shares.add(object, light),
+                None => total += light,
+            }
+        }
+
+        if let Some(walk) = &mut self.radiosity {
+            walk.bounce -= 1;
+            (walk.gatherer, walk.gatherer_distance, walk.path_weight) = saved;
+        }
+        let mean = (total + shares.total()) / count as f64 * settings.brightness;
+        let grey = DVec3::splat(greyscale(mean));
+        let irradiance = mean.lerp(grey, settings.gray_threshold);
+        // Ward's reuse distance: the harmonic mean of the distances the rays went, within
+        // the reuse limits, which are fractions of the distance from the eye.
+        let harmonic = if inverse_distances > 0.0 {
+            count as f64 / inverse_distances
+        } else {
+            f64::INFINITY
+        };
+        let reuse = harmonic.clamp(
+            settings.minimum_reuse * eye_distance,
+            settings.maximum_reuse * eye_distance,
+        );
+        Sample {
+            position: p,
+            normal: n,
+            irradiance,
+            reuse,
+        }
+    }
+}
+
+/// The light of a gather's rays by the object each met, when importance is in play: an
+/// object's rays beyond its share of the sequence are not shaded, and those shaded stand
+/// in for them.
+#[derive(Default)]
+struct ObjectShares {
+    /// Per object met: its address, its rays, its shaded rays and their light.
+    objects: Vec<(usize, u32, u32, DVec3)>,
+}
+
+impl ObjectShares {
+    /// Counts the `i`-th ray meeting `leaf`; the object's place when the ray is to be
+    /// shaded, because it lies within the object's share of the sequence or is the first
+    /// to meet it.
+    fn meet(&mut self, leaf: &Leaf, i: usize, share: f64) -> Option<usize> {
+        let address = std::ptr::from_ref(leaf) as usize;
+        let at = match self.objects.iter().position(|o| o.0 == address) {
+            Some(at) => at,
+            None => {
+                self.objects.push((address, 0, 0, DVec3::ZERO));
+                self.objects.len() - 1
+            }
+        };
+        let object = &mut self.objects[at];
+        object.1 += 1;
+        ((i as f64) < share || object.2 == 0).then_some(at)
+    }
+
+    fn add(&mut self, at: usize, light: DVec3) {
+        self.objects[at].2 += 1;
+        self.objects[at].3 += light;
+    }
+
+    /// The light of every ray, shaded or stood in for.
+    fn total(&self) -> DVec3 {
+        self.objects
+            .iter()
+            .filter(|o| o.2 > 0)
+            .map(|o| o.3 * (f64::from(o.1) / f64::from(o.2)))
+            .sum()
+    }
+}
+
+/// `light` dimmed, keeping its hue, so that its brightness is at most `max_sample`.
+fn limit(light: DVec3, max_sample: Option<f64>) -> DVec3 {
+    match max_sample {
+        Some(max) if greyscale(light) > max => light * (max / greyscale(light)),
+        _ => light,
+    }
+}
