@@ -545,31 +545,6 @@ impl Evaluator<'_> {
         }
     }
 
-    /// Reads and discards a `{ ... }` block whose contents we do not model yet but which
-    /// changes nothing in the picture when the feature it configures is off.
-    pub fn skip_braced_block(&mut self, keyword: &Token) -> Result<()> {
-        self.expect(L_BRACE, "'{'")?;
-        let mut depth = 1usize;
-        loop {
-            let token = self.next()?;
-            match token.kind {
-                L_BRACE => depth += 1,
-                R_BRACE => {
-                    depth -= 1;
-                    if depth == 0 {
-                        return Ok(());
-                    }
-                }
-                ERROR_NODE => {
-                    return Err(
-                        self.error_at(keyword, format!("unclosed {} block", self.text(keyword)))
-                    );
-                }
-                _ => {}
-            }
-        }
-    }
-
     /// Adds a finished top-level object to the scene; lights inside CSG join the scene's.
     pub fn add_object(&mut self, mut object: Object) {
         collect_lights(&mut object, &mut self.lights);

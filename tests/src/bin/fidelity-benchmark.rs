@@ -34,18 +34,25 @@ fn best_of_three(scene: &tests::fidelity::FidelityScene, source: &str, cpu_time:
 }
 
 /// POV-Ray's own CPU seconds for every phase it reports (parse, photons, radiosity
-/// pretrace, trace), the best of three runs of `povray +WT1` on `scene`.
+/// pretrace, trace), the best of three runs of `povray +WT1` on `scene`. As in
+/// `tests/reference/render.sh`, standard includes come from our `analysis/stdinc` (an empty
+/// `POVINI` keeps POV-Ray's library path out).
 fn live_povray_seconds(scene: &tests::fidelity::FidelityScene) -> Option<f64> {
     let path = tests::workspace_root().join(&scene.scene);
     let out = std::env::temp_dir().join(format!("fidelity-benchmark-{}.png", scene.name));
+    let no_ini = std::env::temp_dir().join("fidelity-benchmark-empty.ini");
+    std::fs::write(&no_ini, "").ok()?;
+    let stdinc = tests::workspace_root().join("analysis/stdinc");
     (0..3)
         .map(|_| {
             let run = std::process::Command::new("povray")
+                .env("POVINI", &no_ini)
                 .arg(format!("+I{}", path.display()))
                 .arg(format!("+O{}", out.display()))
                 .args(["+FN", "-D", "-V", "+WT1"])
                 .args(&scene.options)
                 .arg(format!("+L{}", path.parent()?.display()))
+                .arg(format!("+L{}", stdinc.display()))
                 .output()
                 .ok()?;
             let log = String::from_utf8_lossy(&run.stderr);
