@@ -125,7 +125,7 @@ fn parse_line(line: &str) -> Result<FidelityScene, String> {
         let (key, value) = limit.split_once('=').ok_or("threshold without `=`")?;
         let value: f64 = value.parse().map_err(|_| format!("bad number `{value}`"))?;
         match key {
-            "blur" => thresholds.blur = value,
+            "blur" => thresholds.blur = value as usize,
             "region" => thresholds.max_region_error = value,
             "ssim" => thresholds.min_ssim = value,
             "mean" => thresholds.max_mean_error = value,
