@@ -5,6 +5,7 @@
 //! `right`/`up` plane; fisheye, ultra_wide_angle, omnimax, panoramic, the four cylinder
 //! cameras and spherical map it onto angles.
 
+use crate::focal_blur::FocalBlur;
 use crate::ray::Ray;
 use analysis::scene::{self, CameraKind};
 use glam::{DMat3, DVec3};
@@ -21,13 +22,12 @@ pub struct Camera {
     angle: f64,
     right_len: f64,
     up_len: f64,
+    /// Depth of field: each sample then looks through a point of the lens.
+    pub focal_blur: Option<FocalBlur>,
 }
 
 impl Camera {
     pub fn from_scene(camera: &scene::Camera) -> Result<Camera, String> {
-        if camera.focal_blur.is_some() {
-            return Err("not supported yet: focal blur".into());
-        }
         let (right_len, up_len) = (camera.right.length(), camera.up.length());
         let mut c = Camera {
             kind: camera.kind,
@@ -38,6 +38,7 @@ impl Camera {
             angle: camera.angle.unwrap_or(90.0),
             right_len,
             up_len,
+            focal_blur: FocalBlur::from_scene(camera)?,
         };
         // These projections use unit vectors; the others use the vectors' lengths.
         if matches!(

@@ -9,6 +9,7 @@ mod bvh;
 mod camera;
 mod colour;
 mod fast_math;
+mod focal_blur;
 mod function_program;
 mod geometry;
 mod image;

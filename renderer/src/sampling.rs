@@ -10,6 +10,7 @@
 use crate::camera::Camera;
 use crate::colour::{Curve, EncodeTable, Sample};
 use crate::fast_math;
+use crate::ray::Ray;
 use crate::tracer::{Tracer, World};
 
 /// Everything needed to turn image positions into samples.
@@ -46,13 +47,18 @@ impl CompareCurve {
 }
 
 impl Sampler<'_> {
-    /// One camera ray through image position `(x, y)` (pixel units from the top-left).
+    /// The sample at image position `(x, y)` (pixel units from the top-left): one camera
+    /// ray, or with focal blur the mean of rays through the lens from around it.
     pub fn trace(&self, tracer: &mut Tracer<'_>, x: f64, y: f64) -> Sample {
-        match self.camera.ray(x, y, self.width, self.height) {
-            Some(ray) => tracer.trace_primary(&ray),
-            // POV-Ray leaves such pixels fully transparent.
-            None => Sample::new(glam::DVec3::ZERO, 1.0),
-        }
+        let Some(blur) = &self.camera.focal_blur else {
+            let ray = self.camera.ray(x, y, self.width, self.height);
+            return trace_camera_ray(tracer, ray);
+        };
+        blur.pixel(position_seed(x, y), |s| {
+            let (dx, dy) = s.pixel_offset;
+            let pinhole = self.camera.ray(x + dx, y + dy, self.width, self.height);
+            trace_camera_ray(tracer, pinhole.and_then(|r| blur.through_lens(&r, s.lens)))
+        })
     }
 
     fn differ(&self, a: Sample, b: Sample) -> bool {
@@ -70,9 +76,7 @@ impl Sampler<'_> {
     /// A pseudo-random offset in [-0.5, 0.5)² for a sample position, the same whatever
     /// thread or order traces it.
     fn jitter_at(&self, x: f64, y: f64) -> (f64, f64) {
-        let qx = fast_math::round(x * 65536.0) as i64 as u64;
-        let qy = fast_math::round(y * 65536.0) as i64 as u64;
-        let h = mix(qx.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ qy);
+        let h = position_seed(x, y);
         let a = (h >> 11) as f64 / (1u64 << 53) as f64;
         let b = (mix(h) >> 11) as f64 / (1u64 << 53) as f64;
         (a - 0.5, b - 0.5)
@@ -93,6 +97,21 @@ impl Sampler<'_> {
 pub struct Compared {
     pub sample: Sample,
     encoded: Sample,
+}
+
+fn trace_camera_ray(tracer: &mut Tracer<'_>, ray: Option<Ray>) -> Sample {
+    match ray {
+        Some(ray) => tracer.trace_primary(&ray),
+        // POV-Ray leaves such pixels fully transparent.
+        None => Sample::new(glam::DVec3::ZERO, 1.0),
+    }
+}
+
+/// A hash of an image position, the same whatever thread or order traces it.
+fn position_seed(x: f64, y: f64) -> u64 {
+    let qx = fast_math::round(x * 65536.0) as i64 as u64;
+    let qy = fast_math::round(y * 65536.0) as i64 as u64;
+    mix(qx.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ qy)
 }
 
 fn mix(mut z: u64) -> u64 {
@@ -295,14 +314,14 @@ pub fn stochastic_pixel(
 
 /// Running sums for a sample variance per channel.
 #[derive(Debug, Default)]
-struct Moments {
-    count: u32,
+pub struct Moments {
+    pub count: u32,
     sum: [f64; 4],
     squares: [f64; 4],
 }
 
 impl Moments {
-    fn add(&mut self, s: Sample) {
+    pub fn add(&mut self, s: Sample) {
         let v = [s.colour.x, s.colour.y, s.colour.z, s.transmit];
         self.count += 1;
         for ((sum, square), value) in self.sum.iter_mut().zip(&mut self.squares).zip(v) {
@@ -311,22 +330,21 @@ impl Moments {
         }
     }
 
+    /// The sample variance of channel `i`.
+    pub fn variance(&self, i: usize) -> f64 {
+        let n = f64::from(self.count);
+        ((self.squares[i] - self.sum[i] * self.sum[i] / n) / (n - 1.0)).max(0.0)
+    }
+
     /// The summed standard deviations of the four channels.
     fn spread(&self) -> f64 {
-        let n = f64::from(self.count);
-        (0..4)
-            .map(|i| {
-                ((self.squares[i] - self.sum[i] * self.sum[i] / n) / (n - 1.0))
-                    .max(0.0)
-                    .sqrt()
-            })
-            .sum()
+        (0..4).map(|i| self.variance(i).sqrt()).sum()
     }
 }
 
 /// The standard normal quantile (Acklam's rational approximation, relative error below
-/// 1.2e-9), for the confidence factor of method 3.
-fn inverse_normal_cdf(p: f64) -> f64 {
+/// 1.2e-9), for the confidence factors of method 3 and focal blur.
+pub fn inverse_normal_cdf(p: f64) -> f64 {
     const A: [f64; 6] = [
         -3.969_683_028_665_376e1,
         2.209_460_984_245_205e2,

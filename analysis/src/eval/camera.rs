@@ -75,19 +75,38 @@ impl Evaluator<'_> {
                 }
                 APERTURE_KW => blur(camera).aperture = self.float()?,
                 BLUR_SAMPLES_KW => {
-                    let first = self.int()?;
+                    let first = self.int()?.max(0) as u32;
                     let (min, max) = if self.eat(COMMA)? {
-                        (first, self.int()?)
+                        (first, self.int()?.max(0) as u32)
                     } else {
-                        (first, first)
+                        // The manual's default minimum: 4 below 7 samples, 7 from there.
+                        (if first < 7 { 4 } else { 7 }, first)
                     };
                     let b = blur(&mut value.camera);
-                    b.min_samples = min.max(1) as u32;
-                    b.max_samples = max.max(1) as u32;
+                    b.min_samples = min.clamp(1, max.max(1));
+                    b.max_samples = max;
                 }
                 FOCAL_POINT_KW => blur(camera).focal_point = self.vector()?,
-                CONFIDENCE_KW => blur(camera).confidence = self.float()?,
-                VARIANCE_KW => blur(camera).variance = self.float()?,
+                CONFIDENCE_KW => {
+                    let confidence = self.float()?;
+                    if !(0.0..1.0).contains(&confidence) {
+                        return Err(self.error_at(
+                            &token,
+                            format!("confidence must be at least 0 and below 1, not {confidence}"),
+                        ));
+                    }
+                    blur(camera).confidence = confidence;
+                }
+                VARIANCE_KW => {
+                    let variance = self.float()?;
+                    if variance == 1.0 {
+                        // As POV-Ray does: 1 would accept any spread, so the default
+                        // stands, with a warning.
+                        self.warn_at(&token, "variance 1 ignored: using the default 1/128");
+                    } else {
+                        blur(&mut value.camera).variance = variance;
+                    }
+                }
                 NORMAL_KW | BOKEH_KW | MESH_CAMERA_KW => {
                     return Err(self.unsupported(&token, &format!("camera {}", self.text(&token))));
                 }
@@ -170,18 +189,76 @@ impl Evaluator<'_> {
             camera.right = t.vector(camera.right);
             camera.up = t.vector(camera.up);
             camera.sky = t.vector(camera.sky);
+            // The focal point moves with the camera, as POV-Ray's does.
+            if let Some(blur) = &mut camera.focal_blur {
+                blur.focal_point = t.point(blur.focal_point);
+            }
         }
         camera
     }
 }
 
 fn blur(camera: &mut Camera) -> &mut FocalBlur {
+    // POV-Ray's defaults: no aperture and no samples, so that either alone blurs nothing.
     camera.focal_blur.get_or_insert(FocalBlur {
         aperture: 0.0,
-        min_samples: 4,
-        max_samples: 4,
+        min_samples: 0,
+        max_samples: 0,
         focal_point: DVec3::ZERO,
         confidence: 0.9,
         variance: 1.0 / 128.0,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::eval::{EvalOptions, evaluate};
+    use crate::files::MemoryFiles;
+    use crate::scene::FocalBlur;
+    use glam::DVec3;
+
+    fn blur_of(camera: &str) -> Option<FocalBlur> {
+        let text = format!("#version 3.7;\ncamera {{ {camera} }}\n");
+        let files = MemoryFiles::new().with("scene.pov", text);
+        let evaluation = evaluate("scene.pov", &files, &EvalOptions::default());
+        evaluation
+            .scene
+            .expect("the camera evaluates")
+            .camera
+            .focal_blur
+    }
+
+    #[test]
+    fn blur_samples_take_the_manuals_default_minimum() {
+        let blur = blur_of("aperture 1 blur_samples 5").unwrap();
+        assert_eq!((blur.min_samples, blur.max_samples), (4, 5));
+        let blur = blur_of("aperture 1 blur_samples 30").unwrap();
+        assert_eq!((blur.min_samples, blur.max_samples), (7, 30));
+        let blur = blur_of("aperture 1 blur_samples 2, 30").unwrap();
+        assert_eq!((blur.min_samples, blur.max_samples), (2, 30));
+        // A minimum above the maximum is the maximum.
+        let blur = blur_of("aperture 1 blur_samples 3").unwrap();
+        assert_eq!((blur.min_samples, blur.max_samples), (3, 3));
+    }
+
+    #[test]
+    fn an_aperture_alone_takes_no_samples() {
+        let blur = blur_of("aperture 1").unwrap();
+        assert_eq!(blur.max_samples, 0);
+        assert_eq!(blur.confidence, 0.9);
+        assert_eq!(blur.variance, 1.0 / 128.0);
+    }
+
+    #[test]
+    fn the_focal_point_moves_with_the_camera() {
+        let blur =
+            blur_of("aperture 1 blur_samples 9 focal_point <0, 0, 5> translate <1, 2, 3>").unwrap();
+        assert_eq!(blur.focal_point, DVec3::new(1.0, 2.0, 8.0));
+    }
+
+    #[test]
+    fn variance_one_keeps_the_default() {
+        let blur = blur_of("aperture 1 blur_samples 9 variance 1").unwrap();
+        assert_eq!(blur.variance, 1.0 / 128.0);
+    }
 }

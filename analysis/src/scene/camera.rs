@@ -18,12 +18,15 @@ pub enum CameraKind {
     },
 }
 
-/// Focal blur: `aperture`, `blur_samples`, `focal_point`, `confidence`, `variance`.
+/// Focal blur: `aperture`, `blur_samples`, `focal_point`, `confidence`, `variance`. As in
+/// POV-Ray, nothing is blurred unless both the aperture and the maximum number of samples
+/// are above zero.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FocalBlur {
     pub aperture: f64,
     pub min_samples: u32,
     pub max_samples: u32,
+    /// In world space: the camera's transformations have moved it with the camera.
     pub focal_point: DVec3,
     pub confidence: f64,
     pub variance: f64,
