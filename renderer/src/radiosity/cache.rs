@@ -68,8 +68,9 @@ impl Spots {
     }
 
     /// Calls `f` with each sample that may lie within `bound` reuse distances of the
-    /// point at `offset` from the cell's centre (`slack` covers single precision).
-    fn near(&self, offset: DVec3, bound: f64, slack: f64, mut f: impl FnMut(u32)) {
+    /// point at `offset` from the cell's centre (`slack` covers single precision), until
+    /// `f` returns `true`; returns whether it did.
+    fn near(&self, offset: DVec3, bound: f64, slack: f64, mut f: impl FnMut(u32) -> bool) -> bool {
         let (qx, qy, qz) = (offset.x as f32, offset.y as f32, offset.z as f32);
         let (b, slack) = (bound as f32 * 1.001, slack as f32);
         let mut start = 0;
@@ -87,12 +88,13 @@ impl Spots {
                 *hit = dx * dx + dy * dy + dz * dz <= reach * reach;
             }
             for (k, &hit) in near[..end - start].iter().enumerate() {
-                if hit {
-                    f(self.sample[start + k]);
+                if hit && f(self.sample[start + k]) {
+                    return true;
                 }
             }
             start = end;
         }
+        false
     }
 }
 
@@ -208,11 +210,7 @@ impl Cache {
 
     /// The samples that may stand in for `(p, n)` under `bound`, blended.
     pub fn lookup(&self, p: DVec3, n: DVec3, bound: f64) -> Blend {
-        let mut sums = Sums::default();
-        if self.root != NONE {
-            let stretch = bound / self.reference_bound;
-            self.visit(self.root, p, n, bound, stretch, &mut sums);
-        }
+        let sums = self.sums(p, n, bound, f64::INFINITY);
         Blend {
             irradiance: if sums.weights > 0.0 {
                 sums.light / sums.weights
@@ -223,26 +221,67 @@ impl Cache {
         }
     }
 
-    fn visit(&self, at: u32, p: DVec3, n: DVec3, bound: f64, stretch: f64, sums: &mut Sums) {
+    /// How well the samples cover `(p, n)` under `bound`, as [`Blend::coverage`], counted
+    /// only until it reaches `enough`: for points whose light nobody sees, where only
+    /// whether the coverage reaches a threshold matters, most of the search is saved. The
+    /// samples are met in the order `lookup` meets them, so the coverage is exactly
+    /// `lookup`'s whenever it is below `enough`.
+    pub fn coverage(&self, p: DVec3, n: DVec3, bound: f64, enough: f64) -> f64 {
+        self.sums(p, n, bound, enough).coverage
+    }
+
+    fn sums(&self, p: DVec3, n: DVec3, bound: f64, enough: f64) -> Sums {
+        let mut sums = Sums::default();
+        if self.root != NONE {
+            let stretch = bound / self.reference_bound;
+            let search = Search {
+                p,
+                n,
+                bound,
+                stretch,
+                enough,
+            };
+            self.visit(self.root, &search, &mut sums);
+        }
+        sums
+    }
+
+    /// Adds the samples of cell `at` and its descendants that fit the search to `sums`;
+    /// returns whether the coverage reached the search's `enough`, which stops it.
+    fn visit(&self, at: u32, search: &Search, sums: &mut Sums) -> bool {
         let cell = &self.cells[at as usize];
-        if !cell.may_reach(p, stretch) {
-            return;
+        if !cell.may_reach(search.p, search.stretch) {
+            return false;
         }
         let slack = 1e-5 * cell.half;
-        cell.spots.near(p - cell.centre, bound, slack, |i| {
-            let s = &self.samples[i as usize];
-            if let Some((weight, quality)) = fit(s, p, n, bound) {
-                sums.light += s.irradiance * weight;
-                sums.weights += weight;
-                sums.coverage += (quality / 2.0).min(4.0);
-            }
-        });
-        for &child in &cell.children {
-            if child != NONE {
-                self.visit(child, p, n, bound, stretch, sums);
-            }
-        }
+        let enough = cell
+            .spots
+            .near(search.p - cell.centre, search.bound, slack, |i| {
+                let s = &self.samples[i as usize];
+                if let Some((weight, quality)) = fit(s, search.p, search.n, search.bound) {
+                    sums.light += s.irradiance * weight;
+                    sums.weights += weight;
+                    sums.coverage += (quality / 2.0).min(4.0);
+                }
+                sums.coverage >= search.enough
+            });
+        enough
+            || cell
+                .children
+                .iter()
+                .any(|&child| child != NONE && self.visit(child, search, sums))
     }
+}
+
+/// What a lookup looks for.
+struct Search {
+    p: DVec3,
+    n: DVec3,
+    bound: f64,
+    /// How much further than their cells were chosen for the samples reach under `bound`.
+    stretch: f64,
+    /// The coverage at which the search may stop.
+    enough: f64,
 }
 
 #[derive(Default)]
@@ -345,6 +384,14 @@ mod tests {
                 .sum();
             assert!(found.coverage > 0.0, "sample {i} not found");
             assert!((found.coverage - expected).abs() < 1e-9, "sample {i}");
+            // A count up to a threshold agrees with the whole count on either side of it.
+            for enough in [0.5, 2.0, expected, expected + 1.0] {
+                let counted = cache.coverage(p, DVec3::Y, 1.8, enough);
+                assert_eq!(counted >= enough, found.coverage >= enough, "sample {i}");
+                if found.coverage < enough {
+                    assert_eq!(counted, found.coverage, "sample {i}");
+                }
+            }
         }
     }
 }

@@ -225,12 +225,29 @@ impl<'w> Tracer<'w> {
             walk.gatherer_distance + (p - walk.gatherer).length()
         };
         let (bound, needed) = walk.rule();
-        let found = walk.cache(bounce).lookup(p, n, bound);
-        if bounce == 0 {
-            walk.weakest = walk.weakest.min(found.coverage);
-        }
-        if found.coverage >= needed {
-            return found.irradiance;
+        if bounce == 0 && walk.phase != Phase::Picture {
+            // A pretrace camera path's own light is unseen (see `vain_pretrace`): only
+            // whether samples cover the point matters, for taking a new one and for the
+            // adaptive pretrace, so the samples are counted only as far as that needs.
+            let adaptive = radiosity
+                .settings
+                .adaptive_nearest_count
+                .map_or(0.0, f64::from);
+            let coverage = walk
+                .cache(bounce)
+                .coverage(p, n, bound, needed.max(adaptive));
+            walk.weakest = walk.weakest.min(coverage);
+            if coverage >= needed {
+                return DVec3::ZERO;
+            }
+        } else {
+            let found = walk.cache(bounce).lookup(p, n, bound);
+            if bounce == 0 {
+                walk.weakest = walk.weakest.min(found.coverage);
+            }
+            if found.coverage >= needed {
+                return found.irradiance;
+            }
         }
         let sample = self.gather(p, n, level, eye_distance, reflectance);
         if let Some(Walk {
