@@ -168,8 +168,9 @@ impl Evaluator<'_> {
                 .as_ref()
                 .is_some_and(|slot| matches!(&*slot.borrow(), Value::Colour(_)));
         match value {
-            // Measured against POV-Ray 3.7: `#declare F = C.red;` gives <F, 0, 0, 0, 0>.
-            Value::Float(v) if starts_colour => Value::colour(Terms::new(&[v])),
+            // `C.red` stays a float (POV-Ray 3.7 prints `#declare F = C.red;` with str() and
+            // adds it to a vector component by component); a vector made from a colour
+            // identifier stays a colour.
             Value::Vector(t) if starts_colour => Value::colour(t),
             other => other,
         }
