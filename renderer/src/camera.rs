@@ -24,10 +24,15 @@ pub struct Camera {
     up_len: f64,
     /// Depth of field: each sample then looks through a point of the lens.
     pub focal_blur: Option<FocalBlur>,
+    /// Bumps perturbing every ray's direction.
+    normal: Option<scene::Normal>,
 }
 
 impl Camera {
     pub fn from_scene(camera: &scene::Camera) -> Result<Camera, String> {
+        if let Some(normal) = &camera.normal {
+            crate::normal::check(normal)?;
+        }
         let (right_len, up_len) = (camera.right.length(), camera.up.length());
         let mut c = Camera {
             kind: camera.kind,
@@ -39,6 +44,7 @@ impl Camera {
             right_len,
             up_len,
             focal_blur: FocalBlur::from_scene(camera)?,
+            normal: camera.normal.clone(),
         };
         // These projections use unit vectors; the others use the vectors' lengths.
         if matches!(
@@ -173,7 +179,12 @@ impl Camera {
                 (self.location, DMat3::from_axis_angle(self.up, lon) * v1)
             }
         };
-        let direction = direction.normalize_or_zero();
+        let mut direction = direction.normalize_or_zero();
+        if let Some(normal) = &self.normal {
+            // POV-Ray samples the camera's normal pattern on the image itself, at the
+            // position (x0, y0, 0), and pushes the ray's world direction by it.
+            direction = crate::normal::perturb(normal, DVec3::new(x0, y0, 0.0), direction);
+        }
         (direction != DVec3::ZERO && direction.is_finite() && origin.is_finite())
             .then(|| Ray::new(origin, direction))
     }

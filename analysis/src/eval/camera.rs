@@ -107,7 +107,8 @@ impl Evaluator<'_> {
                         blur(&mut value.camera).variance = variance;
                     }
                 }
-                NORMAL_KW | BOKEH_KW | MESH_CAMERA_KW => {
+                NORMAL_KW => camera.normal = Some(self.normal_body()?),
+                BOKEH_KW | MESH_CAMERA_KW => {
                     return Err(self.unsupported(&token, &format!("camera {}", self.text(&token))));
                 }
                 kind if Self::starts_transform(kind) => {

@@ -1,4 +1,4 @@
-use super::Origin;
+use super::{Normal, Origin};
 use glam::DVec3;
 
 /// The projection a camera uses.
@@ -46,6 +46,8 @@ pub struct Camera {
     /// The field of view in degrees, for the projections that take it directly.
     pub angle: Option<f64>,
     pub focal_blur: Option<FocalBlur>,
+    /// `normal { }`: bumps that perturb every camera ray, as if seen through bumpy glass.
+    pub normal: Option<Normal>,
     pub origin: Origin,
 }
 
@@ -61,6 +63,7 @@ impl Default for Camera {
             sky: DVec3::Y,
             angle: None,
             focal_blur: None,
+            normal: None,
             origin: None,
         }
     }
