@@ -5,6 +5,7 @@
 pub mod ast;
 pub mod diagnostic;
 mod grammar;
+pub mod green_walk;
 mod kind;
 pub mod lexer;
 pub mod line_index;

@@ -2,13 +2,13 @@
 //! patterned textures, the old blob component, `hf_gray_16`, and the deprecated
 //! `glass_old.inc`. Each warning says what replaces it.
 
-use super::workspace::{Workspace, literal_includes};
+use super::workspace::Workspace;
 use syntax::{Diagnostic, SyntaxKind};
 
 pub const CODE: &str = "legacy-syntax";
 
 /// What to write instead of each legacy keyword.
-fn replacement(kind: SyntaxKind) -> Option<&'static str> {
+pub(super) fn replacement(kind: SyntaxKind) -> Option<&'static str> {
     Some(match kind {
         SyntaxKind::TILES_KW => {
             "'tiles' is an obsolete patterned texture; use 'texture { checker texture { ... } texture { ... } }'"
@@ -29,32 +29,17 @@ fn replacement(kind: SyntaxKind) -> Option<&'static str> {
 pub fn check(workspace: &Workspace) -> Vec<Diagnostic> {
     let mut warnings = Vec::new();
     for file in workspace.user_files() {
-        let Some(root) = &file.root else {
-            continue;
-        };
-        for token in root
-            .descendants_with_tokens()
-            .filter_map(|e| e.into_token())
-        {
-            if let Some(message) = replacement(token.kind()) {
-                warnings.push(
-                    Diagnostic::warning(&file.name, token.text_range(), message).with_code(CODE),
-                );
+        for &(kind, range) in file.legacy_tokens.iter() {
+            if let Some(message) = replacement(kind) {
+                warnings.push(Diagnostic::warning(&file.name, range, message).with_code(CODE));
             }
         }
-        for include in root
-            .descendants()
-            .filter(|node| node.kind() == SyntaxKind::INCLUDE)
-        {
-            let names = literal_includes(&include);
-            if names
-                .iter()
-                .any(|name| name.eq_ignore_ascii_case("glass_old.inc"))
-            {
+        for (name, range) in file.includes.iter() {
+            if name.eq_ignore_ascii_case("glass_old.inc") {
                 warnings.push(
                     Diagnostic::warning(
                         &file.name,
-                        include.text_range(),
+                        *range,
                         "glass_old.inc is deprecated since POV-Ray 3.7; the materials of glass.inc replace it",
                     )
                     .with_code(CODE),

@@ -5,7 +5,7 @@
 
 use super::workspace::Workspace;
 use std::collections::HashSet;
-use syntax::{Diagnostic, SyntaxKind};
+use syntax::Diagnostic;
 
 pub const CODE: &str = "unknown-keyword";
 
@@ -17,22 +17,8 @@ pub fn check(workspace: &Workspace) -> Vec<Diagnostic> {
         .collect();
     let mut warnings = Vec::new();
     for file in workspace.user_files() {
-        let Some(root) = &file.root else {
-            continue;
-        };
-        for token in root
-            .descendants_with_tokens()
-            .filter_map(|e| e.into_token())
-            .filter(|token| token.kind() == SyntaxKind::IDENT)
-        {
-            let name = token.text();
-            let Some(parent) = token.parent() else {
-                continue;
-            };
-            // Only names in expression position; `#read (F, var)` declares `var`.
-            if parent.kind() != SyntaxKind::NAME_REF
-                || parent.ancestors().any(|a| a.kind() == SyntaxKind::FILE_IO)
-                || defined.contains(name)
+        for (name, range) in file.name_refs.iter() {
+            if defined.contains(name.as_str())
                 || name.len() < 3
                 || name.chars().any(|c| !(c.is_ascii_lowercase() || c == '_'))
             {
@@ -40,13 +26,9 @@ pub fn check(workspace: &Workspace) -> Vec<Diagnostic> {
             }
             if let Some(keyword) = closest_keyword(name) {
                 warnings.push(
-                    Diagnostic::warning(
-                        &file.name,
-                        token.text_range(),
-                        format!("unknown keyword '{name}'"),
-                    )
-                    .with_code(CODE)
-                    .with_note(format!("did you mean '{keyword}'?")),
+                    Diagnostic::warning(&file.name, *range, format!("unknown keyword '{name}'"))
+                        .with_code(CODE)
+                        .with_note(format!("did you mean '{keyword}'?")),
                 );
             }
         }

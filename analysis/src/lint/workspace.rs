@@ -4,6 +4,7 @@
 use crate::files::FileSource;
 use std::collections::{BTreeMap, HashMap, HashSet};
 use std::sync::{Arc, Mutex, OnceLock};
+use syntax::green_walk::{GreenNodeRef, Step, walk};
 use syntax::{SyntaxKind, SyntaxNode, TextRange};
 
 /// Where a file came from, which decides what is reported in it: the standard includes
@@ -39,28 +40,32 @@ pub struct Definition {
     pub in_macro: bool,
 }
 
-/// The names a file defines and uses.
+/// The names a file defines and uses, and the rest of what the lints read in it.
 #[derive(Debug, Clone)]
 pub struct FileFacts {
     pub name: String,
     pub origin: Origin,
     pub text: Arc<str>,
-    /// The syntax tree, kept for the user's files only: the lints read the standard
-    /// includes' names alone, which are parsed once per process.
-    pub root: Option<SyntaxNode>,
     pub definitions: Arc<[Definition]>,
     /// Every identifier that is not a definition, by name and place.
     pub uses: Arc<[(String, TextRange)]>,
-    /// The names of the files it includes by a literal name.
-    pub includes: Arc<[String]>,
+    /// The identifiers read as values (not the targets of `#read`): where a misspelt
+    /// keyword shows up.
+    pub name_refs: Arc<[(String, TextRange)]>,
+    /// The files it includes by a literal name, with the place of each `#include`.
+    pub includes: Arc<[(String, TextRange)]>,
+    /// The tokens of legacy syntax.
+    pub legacy_tokens: Arc<[(SyntaxKind, TextRange)]>,
 }
 
-/// What [`FileFacts`] knows apart from the tree, shareable between threads.
+/// What [`FileFacts`] knows about a file's text, shareable between threads.
 #[derive(Debug)]
 struct NameFacts {
     definitions: Arc<[Definition]>,
     uses: Arc<[(String, TextRange)]>,
-    includes: Arc<[String]>,
+    name_refs: Arc<[(String, TextRange)]>,
+    includes: Arc<[(String, TextRange)]>,
+    legacy_tokens: Arc<[(SyntaxKind, TextRange)]>,
 }
 
 /// The scene and the files it includes, in the order first met.
@@ -93,7 +98,7 @@ impl Workspace {
             let parsed = source.parse(&name);
             let facts = FileFacts::new(name, origin, text, parsed);
             // Reversed, so that the first include is looked at first.
-            for include in facts.includes.iter().rev() {
+            for (include, _) in facts.includes.iter().rev() {
                 let origin = if origin == Origin::Standard {
                     Origin::Standard
                 } else {
@@ -145,21 +150,21 @@ impl FileFacts {
         text: Arc<str>,
         parsed: Option<syntax::Parse>,
     ) -> FileFacts {
-        let (root, facts) = if origin == Origin::Standard {
-            (None, standard_facts(&name, &text))
+        let facts = if origin == Origin::Standard {
+            standard_facts(&name, &text)
         } else {
             let root = parsed.unwrap_or_else(|| syntax::parse(&text)).syntax_node();
-            let facts = NameFacts::of(&root);
-            (Some(root), Arc::new(facts))
+            Arc::new(NameFacts::of(&root))
         };
         FileFacts {
             name,
             origin,
             text,
-            root,
             definitions: facts.definitions.clone(),
             uses: facts.uses.clone(),
+            name_refs: facts.name_refs.clone(),
             includes: facts.includes.clone(),
+            legacy_tokens: facts.legacy_tokens.clone(),
         }
     }
 }
@@ -188,52 +193,79 @@ fn standard_facts(name: &str, text: &str) -> Arc<NameFacts> {
 }
 
 impl NameFacts {
+    /// Everything in one walk over the tree: a scene's every token is visited on each edit.
     fn of(root: &SyntaxNode) -> NameFacts {
         let mut definitions = Vec::new();
         let mut uses = Vec::new();
-        for token in root
-            .descendants_with_tokens()
-            .filter_map(|e| e.into_token())
-        {
-            if token.kind() != SyntaxKind::IDENT {
-                continue;
+        let mut name_refs = Vec::new();
+        let mut includes = Vec::new();
+        let mut legacy_tokens = Vec::new();
+        walk(root, |step, enclosing| match step {
+            Step::Node(node) if node.kind() == SyntaxKind::INCLUDE => {
+                if let Some(name) = literal_include(&node) {
+                    includes.push((name, node.range()));
+                }
             }
-            let name = token.text().to_owned();
-            let parent = token.parent();
-            match parent.as_ref().filter(|p| p.kind() == SyntaxKind::NAME) {
-                Some(name_node) => definitions.push(Definition {
-                    name,
-                    range: token.text_range(),
-                    kind: definition_kind(name_node),
-                    in_macro: name_node
-                        .ancestors()
-                        .any(|a| a.kind() == SyntaxKind::MACRO_BODY),
-                }),
-                None => uses.push((name, token.text_range())),
+            Step::Node(_) => {}
+            Step::Token(token) if token.kind == SyntaxKind::IDENT => {
+                let name = token.text.to_owned();
+                match enclosing.last().map(GreenNodeRef::kind) {
+                    Some(SyntaxKind::NAME) => definitions.push(Definition {
+                        name,
+                        range: token.range,
+                        kind: definition_kind(enclosing),
+                        in_macro: enclosing
+                            .iter()
+                            .any(|node| node.kind() == SyntaxKind::MACRO_BODY),
+                    }),
+                    parent => {
+                        // `#read (F, var)` declares `var`.
+                        if parent == Some(SyntaxKind::NAME_REF)
+                            && !enclosing
+                                .iter()
+                                .any(|node| node.kind() == SyntaxKind::FILE_IO)
+                        {
+                            name_refs.push((name.clone(), token.range));
+                        }
+                        uses.push((name, token.range));
+                    }
+                }
             }
-        }
+            Step::Token(token) => {
+                if super::legacy::replacement(token.kind).is_some() {
+                    legacy_tokens.push((token.kind, token.range));
+                }
+            }
+        });
         NameFacts {
             definitions: definitions.into(),
             uses: uses.into(),
-            includes: literal_includes(root).into(),
+            name_refs: name_refs.into(),
+            includes: includes.into(),
+            legacy_tokens: legacy_tokens.into(),
         }
     }
 }
 
-fn definition_kind(name: &SyntaxNode) -> DefinitionKind {
-    let Some(parent) = name.parent() else {
+/// What the identifier in the `NAME` node that ends `enclosing` defines.
+fn definition_kind(enclosing: &[GreenNodeRef<'_>]) -> DefinitionKind {
+    // Counting back from the name: its parent, grandparent, great-grandparent.
+    let up = |steps: usize| {
+        enclosing
+            .len()
+            .checked_sub(steps + 1)
+            .map(|index| enclosing[index])
+    };
+    let Some(parent) = up(1) else {
         return DefinitionKind::Other;
     };
     let declaration = match parent.kind() {
         SyntaxKind::DECLARE => Some(parent),
         // `#declare (A, B) = ...`
-        SyntaxKind::TARGET_LIST => parent.parent().filter(|p| p.kind() == SyntaxKind::DECLARE),
+        SyntaxKind::TARGET_LIST => up(2).filter(|p| p.kind() == SyntaxKind::DECLARE),
         SyntaxKind::MACRO => return DefinitionKind::Macro,
         SyntaxKind::PARAM => {
-            let in_macro = parent
-                .parent()
-                .and_then(|list| list.parent())
-                .is_some_and(|owner| owner.kind() == SyntaxKind::MACRO);
+            let in_macro = up(3).is_some_and(|owner| owner.kind() == SyntaxKind::MACRO);
             return if in_macro {
                 DefinitionKind::MacroParameter
             } else {
@@ -246,9 +278,7 @@ fn definition_kind(name: &SyntaxNode) -> DefinitionKind {
         return DefinitionKind::Other;
     };
     let keyword = declaration
-        .children_with_tokens()
-        .filter_map(|e| e.into_token())
-        .map(|t| t.kind())
+        .child_token_kinds()
         .find(|kind| matches!(kind, SyntaxKind::DECLARE_KW | SyntaxKind::LOCAL_KW));
     match keyword {
         Some(SyntaxKind::LOCAL_KW) => DefinitionKind::Local,
@@ -257,25 +287,17 @@ fn definition_kind(name: &SyntaxNode) -> DefinitionKind {
     }
 }
 
-/// The names of `#include "name"` directives whose name is a plain string literal.
-pub fn literal_includes(root: &SyntaxNode) -> Vec<String> {
-    root.descendants()
-        .filter(|node| node.kind() == SyntaxKind::INCLUDE)
-        .filter_map(|include| {
-            let tokens: Vec<_> = include
-                .descendants_with_tokens()
-                .filter_map(|e| e.into_token())
-                .filter(|t| !t.kind().is_trivia())
-                .collect();
-            // Only `#include "name"`: a computed name is known to the evaluator alone.
-            let [_, _, string] = tokens.as_slice() else {
-                return None;
-            };
-            if string.kind() != SyntaxKind::STRING {
-                return None;
-            }
-            let (name, problems) = syntax::lexer::unescape_string(string.text());
-            problems.is_empty().then_some(name)
-        })
-        .collect()
+/// The name of an `#include "name"` directive whose name is a plain string literal.
+fn literal_include(include: &GreenNodeRef<'_>) -> Option<String> {
+    let tokens: Vec<_> = include
+        .tokens()
+        .into_iter()
+        .filter(|(kind, _)| !kind.is_trivia())
+        .collect();
+    // Only `#include "name"`: a computed name is known to the evaluator alone.
+    let [_, _, (SyntaxKind::STRING, string)] = tokens.as_slice() else {
+        return None;
+    };
+    let (name, problems) = syntax::lexer::unescape_string(string);
+    problems.is_empty().then_some(name)
 }
