@@ -280,12 +280,12 @@ fn layer_from_scene(texture: &scene::Texture) -> Result<Layer, String> {
         finish,
     } = texture
     else {
-        return Err("not supported yet: texture maps inside layered textures".into());
+        // The evaluator refuses these as POV-Ray 3.7 does.
+        return Err("cannot layer a patterned texture with another".into());
     };
     if let Some(n) = normal {
         crate::normal::check(n)?;
     }
-    check_finish(finish)?;
     Ok(Layer {
         pigment: pigment_from_scene(pigment)?,
         normal: normal.clone(),
@@ -317,14 +317,6 @@ pub(crate) fn pigment_from_scene(pigment: &scene::Pigment) -> Result<Pigment, St
             })
         }
     }
-}
-
-/// Checks the finish for features the shader does not draw yet.
-fn check_finish(finish: &Finish) -> Result<(), String> {
-    if finish.diffuse_albedo {
-        return Err("not supported yet: diffuse albedo".into());
-    }
-    Ok(())
 }
 
 #[cfg(test)]

@@ -347,7 +347,7 @@ impl Evaluator<'_> {
             TRACE_KW => self.trace_call(token),
             INSIDE_KW => {
                 self.expect(L_PAREN, "'('")?;
-                let object = self.object_argument()?;
+                let object = self.object_or_identifier()?;
                 self.expect(COMMA, "','")?;
                 let point = self.vector_in_parens()?;
                 self.expect(R_PAREN, "')'")?;
@@ -359,7 +359,7 @@ impl Evaluator<'_> {
             }
             MIN_EXTENT_KW | MAX_EXTENT_KW => {
                 self.expect(L_PAREN, "'('")?;
-                let object = self.object_argument()?;
+                let object = self.object_or_identifier()?;
                 self.expect(R_PAREN, "')'")?;
                 let (min, max) = self
                     .geometry
@@ -401,7 +401,7 @@ impl Evaluator<'_> {
     /// `trace(Object, Start, Direction [, NormalIdent])`, after `trace`.
     fn trace_call(&mut self, token: &Token) -> Result<Option<Value>> {
         self.expect(L_PAREN, "'('")?;
-        let object = self.object_argument()?;
+        let object = self.object_or_identifier()?;
         self.expect(COMMA, "','")?;
         let origin = self.vector_in_parens()?;
         self.expect(COMMA, "','")?;
@@ -426,27 +426,6 @@ impl Evaluator<'_> {
             *slot.borrow_mut() = vec3(normal);
         }
         Ok(Some(vec3(point)))
-    }
-
-    /// An object argument: a declared object or an object statement.
-    fn object_argument(&mut self) -> Result<crate::scene::Object> {
-        let token = self.next()?;
-        if Self::starts_object(token.kind) {
-            self.unget(token);
-            return self.object();
-        }
-        match token.slot.as_ref().map(|s| s.borrow().clone()) {
-            Some(Value::Object(object)) => Ok(crate::scene::Object::clone(&object)),
-            Some(other) => Err(self.error_at(
-                &token,
-                format!("expected an object, found {}", other.type_name()),
-            )),
-            None if token.kind == IDENT => Err(self.undeclared(&token)),
-            None => Err(self.error_at(
-                &token,
-                format!("expected an object, found {}", self.describe(&token)),
-            )),
-        }
     }
 
     fn checked_string(&self, s: String) -> Result<Option<Value>> {

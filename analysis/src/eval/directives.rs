@@ -313,9 +313,15 @@ impl Evaluator<'_> {
                 self.next()?;
                 let mut texture = self.texture_body()?;
                 // More texture blocks after the first make a layered texture.
-                while self.guarded(|this| this.eat(TEXTURE_KW))? {
+                loop {
+                    let next = self.guarded(Self::next)?;
+                    if next.kind != TEXTURE_KW {
+                        self.unget(next);
+                        break;
+                    }
                     let top = self.texture_body()?;
-                    texture = super::object::layer(texture, top);
+                    texture = super::object::layer(texture, top)
+                        .map_err(|reason| self.error_at(&next, reason))?;
                 }
                 Ok(Value::Texture(Rc::new(texture)))
             }

@@ -182,33 +182,7 @@ impl Evaluator<'_> {
                 };
                 self.csg_children(op, origin)?
             }
-            OBJECT_KW => {
-                let token = self.next()?;
-                if Self::starts_object(token.kind) {
-                    self.unget(token);
-                    self.object()?
-                } else {
-                    match token.slot.as_ref().map(|s| s.borrow().clone()) {
-                        Some(Value::Object(object)) => Object::clone(&object),
-                        Some(other) => {
-                            return Err(self.error_at(
-                                &token,
-                                format!("expected an object, found {}", other.type_name()),
-                            ));
-                        }
-                        None if token.kind == IDENT => return Err(self.undeclared(&token)),
-                        None => {
-                            return Err(self.error_at(
-                                &token,
-                                format!(
-                                    "expected an object identifier, found {}",
-                                    self.describe(&token)
-                                ),
-                            ));
-                        }
-                    }
-                }
-            }
+            OBJECT_KW => self.object_or_identifier()?,
             kind if MATH_SHAPES.contains(&kind) => Object::new(self.math_shape(&keyword)?, origin),
             TEXT_KW => Object::new(self.text_shape(&keyword)?, origin),
             _ => {
@@ -263,6 +237,28 @@ impl Evaluator<'_> {
         Ok((corners, smooth.then_some(normals)))
     }
 
+    /// An object statement or an object identifier: what `object { }`, `looks_like { }`,
+    /// `projected_through { }` and the functions of objects take.
+    pub(super) fn object_or_identifier(&mut self) -> Result<Object> {
+        let token = self.next()?;
+        if Self::starts_object(token.kind) {
+            self.unget(token);
+            return self.object();
+        }
+        match token.slot.as_ref().map(|s| s.borrow().clone()) {
+            Some(Value::Object(object)) => Ok(Object::clone(&object)),
+            Some(other) => Err(self.error_at(
+                &token,
+                format!("expected an object, found {}", other.type_name()),
+            )),
+            None if token.kind == IDENT => Err(self.undeclared(&token)),
+            None => Err(self.error_at(
+                &token,
+                format!("expected an object, found {}", self.describe(&token)),
+            )),
+        }
+    }
+
     fn csg_children(&mut self, op: CsgOp, origin: crate::scene::Origin) -> Result<Object> {
         let mut children = Vec::new();
         let mut lights = Vec::new();
@@ -309,7 +305,8 @@ impl Evaluator<'_> {
                         map_texture_uv(&mut texture);
                     }
                     object.texture = Some(Arc::new(match object.texture.take() {
-                        Some(below) => layer(Texture::clone(&below), texture),
+                        Some(below) => layer(Texture::clone(&below), texture)
+                            .map_err(|reason| self.error_at(&token, reason))?,
                         None => texture,
                     }));
                 }
@@ -467,7 +464,9 @@ impl Evaluator<'_> {
                 TEXTURE_KW => {
                     let texture = self.texture_body()?;
                     material.texture = Some(match material.texture.take() {
-                        Some(below) => layer(below, texture),
+                        Some(below) => {
+                            layer(below, texture).map_err(|reason| self.error_at(&token, reason))?
+                        }
                         None => texture,
                     });
                 }
@@ -553,8 +552,16 @@ impl Evaluator<'_> {
     }
 }
 
-/// The layer `top` over the texture `below`.
-pub fn layer(below: Texture, top: Texture) -> Texture {
+/// The layer `top` over the texture `below`; `Err` with POV-Ray 3.7's reason when either
+/// is a patterned texture (a texture map, block pattern, tiles or material map), which
+/// only plain and layered textures may be layered with.
+pub fn layer(below: Texture, top: Texture) -> std::result::Result<Texture, &'static str> {
+    if matches!(top, Texture::Pattern { .. }) {
+        return Err("cannot layer a patterned texture over another");
+    }
+    if matches!(below, Texture::Pattern { .. }) {
+        return Err("cannot layer over a patterned texture");
+    }
     let mut layers = match below {
         Texture::Layered(layers) => layers,
         other => vec![other],
@@ -563,7 +570,7 @@ pub fn layer(below: Texture, top: Texture) -> Texture {
         Texture::Layered(more) => layers.extend(more),
         other => layers.push(other),
     }
-    Texture::Layered(layers)
+    Ok(Texture::Layered(layers))
 }
 
 /// Moves the lights of CSG objects into `lights`. A light group keeps its own.

@@ -945,16 +945,18 @@ impl Evaluator<'_> {
             Some(Value::Finish(f)) => finish = Finish::clone(&f),
             _ => self.unget(first),
         }
+        let mut albedos = Albedos::default();
         loop {
             let token = self.next()?;
             match token.kind {
-                R_BRACE => return Ok(finish),
+                R_BRACE => {
+                    albedos.apply_to(&mut finish);
+                    return Ok(finish);
+                }
                 AMBIENT_KW => finish.ambient = self.scene_colour()?.rgb,
                 EMISSION_KW => finish.emission = self.scene_colour()?.rgb,
                 DIFFUSE_KW => {
-                    if self.eat(ALBEDO_KW)? {
-                        finish.diffuse_albedo = true;
-                    }
+                    albedos.diffuse = self.eat(ALBEDO_KW)?;
                     finish.diffuse = self.float()?;
                     if self.eat(COMMA)? {
                         finish.diffuse_back = self.float()?;
@@ -963,12 +965,12 @@ impl Evaluator<'_> {
                 BRILLIANCE_KW => finish.brilliance = self.float()?,
                 CRAND_KW => finish.crand = self.float()?,
                 PHONG_KW => {
-                    self.eat(ALBEDO_KW)?;
+                    albedos.phong = self.eat(ALBEDO_KW)?;
                     finish.phong = self.float()?;
                 }
                 PHONG_SIZE_KW => finish.phong_size = self.float()?,
                 SPECULAR_KW => {
-                    self.eat(ALBEDO_KW)?;
+                    albedos.specular = self.eat(ALBEDO_KW)?;
                     finish.specular = self.float()?;
                 }
                 ROUGHNESS_KW => finish.roughness = self.float()?,
@@ -1141,6 +1143,38 @@ impl Evaluator<'_> {
                     ),
                 )),
             }
+        }
+    }
+}
+
+/// Which of a finish block's `diffuse`, `phong` and `specular` amounts were given with
+/// `albedo`: as total reflectance rather than as the peak the shader uses.
+#[derive(Debug, Default, Clone, Copy)]
+struct Albedos {
+    diffuse: bool,
+    phong: bool,
+    specular: bool,
+}
+
+impl Albedos {
+    /// Turns the amounts given as albedos into peaks, with the block's final `brilliance`,
+    /// `phong_size` and `roughness`, as POV-Ray 3.7 does when the block ends (a later
+    /// block that changes `brilliance` keeps the peak). The factors normalise each lobe's
+    /// reflectance over the hemisphere and match POV-Ray's renders to 1/65535: diffuse (both sides) times `(brilliance + 1) / 2`, phong times
+    /// `(phong_size + 1) / 2`, and the specular half-angle lobe of exponent
+    /// `n = 1 / roughness` times `(n + 2) / (4 (2 - 2^(-n/2)))`.
+    fn apply_to(self, finish: &mut Finish) {
+        if self.diffuse {
+            let factor = (finish.brilliance + 1.0) / 2.0;
+            finish.diffuse *= factor;
+            finish.diffuse_back *= factor;
+        }
+        if self.phong {
+            finish.phong *= (finish.phong_size + 1.0) / 2.0;
+        }
+        if self.specular {
+            let n = 1.0 / finish.roughness;
+            finish.specular *= (n + 2.0) / (4.0 * (2.0 - (-n / 2.0).exp2()));
         }
     }
 }
@@ -1373,5 +1407,95 @@ pub fn map_normal_uv(normal: &mut Normal) {
         NormalKind::Pattern { pattern, .. }
         | NormalKind::BumpMap { pattern, .. }
         | NormalKind::Map { pattern, .. } => pattern.uv_mapping = true,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::eval::tests::{evaluate_err, evaluate_ok};
+    use crate::scene::{Finish, Texture};
+
+    /// The finish of the scene's only object.
+    fn finish_of(finish: &str) -> Finish {
+        let scene = evaluate_ok(&format!("sphere {{ 0, 1 finish {{ {finish} }} }}"));
+        let Some(Texture::Plain { finish, .. }) = scene.objects[0].texture.as_deref() else {
+            panic!("no plain texture");
+        };
+        Finish::clone(finish)
+    }
+
+    fn assert_close(ours: f64, expected: f64) {
+        assert!((ours - expected).abs() < 1e-4, "{ours} is not {expected}");
+    }
+
+    /// The peaks POV-Ray 3.7 draws for amounts given as albedos, read from its 16-bit
+    /// renders of a lit square with linear gamma.
+    #[test]
+    fn albedos_become_povrays_peaks() {
+        let f = finish_of("diffuse albedo 0.1, 0.2 brilliance 3");
+        assert_close(f.diffuse, 0.2);
+        assert_close(f.diffuse_back, 0.4);
+        assert_close(finish_of("brilliance 5 diffuse albedo 0.1").diffuse, 0.3);
+        assert_close(
+            finish_of("diffuse albedo 0.1 brilliance 0.5").diffuse,
+            0.075,
+        );
+        assert_close(finish_of("diffuse albedo 0.1").diffuse, 0.1);
+        assert_close(finish_of("phong albedo 0.1 phong_size 10").phong, 0.55);
+        assert_close(finish_of("phong albedo 0.1 phong_size 1").phong, 0.1);
+        assert_close(finish_of("specular albedo 0.1").specular, 0.27514);
+        assert_close(
+            finish_of("specular albedo 0.1 roughness 0.1").specular,
+            0.15238,
+        );
+        assert_close(
+            finish_of("specular albedo 0.1 roughness 0.5").specular,
+            0.06667,
+        );
+        // Without albedo the amounts are peaks already.
+        assert_close(finish_of("diffuse 0.1 brilliance 3").diffuse, 0.1);
+        assert_close(finish_of("specular 0.1").specular, 0.1);
+    }
+
+    /// The conversion happens when the block ends: a finish built on a declared one keeps
+    /// the declared peak whatever brilliance it sets, as in POV-Ray's renders.
+    #[test]
+    fn a_declared_albedo_stays_a_peak() {
+        let scene = evaluate_ok(
+            "#declare F = finish { diffuse albedo 0.1 brilliance 3 }
+             sphere { 0, 1 finish { F brilliance 5 } }",
+        );
+        let Some(Texture::Plain { finish, .. }) = scene.objects[0].texture.as_deref() else {
+            panic!("no plain texture");
+        };
+        assert_close(finish.diffuse, 0.2);
+        assert_eq!(finish.brilliance, 5.0);
+    }
+
+    /// POV-Ray 3.7 refuses a patterned texture as a layer, above or below, in objects,
+    /// materials and declared layered textures alike.
+    #[test]
+    fn patterned_textures_are_not_layered() {
+        let checker =
+            "texture { checker texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } }";
+        let plain = "texture { pigment { rgbt <1, 0, 0, 0.5> } }";
+        let over = "cannot layer a patterned texture over another";
+        let under = "cannot layer over a patterned texture";
+        for (text, expected) in [
+            (format!("sphere {{ 0, 1 {plain} {checker} }}"), over),
+            (format!("sphere {{ 0, 1 {checker} {plain} }}"), under),
+            (
+                format!("sphere {{ 0, 1 material {{ {plain} {checker} }} }}"),
+                over,
+            ),
+            (format!("#declare T = {checker} {plain}"), under),
+        ] {
+            assert_eq!(evaluate_err(&text), expected, "{text}");
+        }
+        // Layered textures may be what a pattern's entries are.
+        evaluate_ok(&format!(
+            "#declare L = {plain} {plain}
+             sphere {{ 0, 1 texture {{ checker texture {{ L }} texture {{ L }} }} }}"
+        ));
     }
 }
