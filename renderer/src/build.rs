@@ -60,6 +60,7 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
         light_groups: Vec::new(),
         light_set: 0,
         outer_global_lights: None,
+        light_shapes: Vec::new(),
     };
     for light in &scene.lights {
         builder.add_light(light)?;
@@ -72,6 +73,12 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
             }
             objects.push(built);
         }
+    }
+    for mut shape in std::mem::take(&mut builder.light_shapes) {
+        if let Object::Leaf(leaf) = &mut shape {
+            leaf.standalone = true;
+        }
+        objects.push(shape);
     }
     let atmosphere =
         Atmosphere::from_scene(scene, builder.with_media).map_err(|message| BuildError {
@@ -186,6 +193,20 @@ fn scene_scale(scene: &Scene, bvh: &Bvh) -> f64 {
     extent.max(scene.camera.location.abs().max_element())
 }
 
+/// A projection object as POV-Ray uses it: its shape alone, with its textures and
+/// interiors stripped.
+fn bare(object: &scene::Object) -> scene::Object {
+    let mut object = object.clone();
+    object.texture = None;
+    object.interior = None;
+    if let scene::Shape::Csg { children, .. } = &mut object.shape {
+        for child in children {
+            *child = bare(child);
+        }
+    }
+    object
+}
+
 struct Builder {
     /// Whether subsurface light transport is on (`global_settings { subsurface { } }` at
     /// quality 9 or more), which finishes with `translucency` would need.
@@ -208,6 +229,8 @@ struct Builder {
     light_set: u32,
     /// Inside a light group, whether the outermost group lets the scene's lights in.
     outer_global_lights: Option<bool>,
+    /// The lights' `looks_like` objects, placed in the world after the scene's objects.
+    light_shapes: Vec<Object>,
 }
 
 /// The lights of one light group, and whether the scene's lights shine on its objects too.
@@ -219,11 +242,25 @@ struct LightGroupLights {
 
 impl Builder {
     /// Adds a light to the world; returns its index.
+    /// Its `looks_like` object joins the world as an object of its own, lit by the lights
+    /// of the objects being built (a light inside a CSG shows it beside the CSG).
     fn add_light(&mut self, light: &scene::Light) -> Result<u32, BuildError> {
-        let built = Light::from_scene(light).map_err(|message| BuildError {
+        let mut built = Light::from_scene(light).map_err(|message| BuildError {
             message,
             origin: light.origin.clone(),
         })?;
+        if let Some(through) = &light.projected_through {
+            let shape = self.object(&bare(through), None, None, Visibility::default(), false)?;
+            match shape {
+                Some(shape) => built.projected_through = Some(shape),
+                // Through an object without a surface, no light passes.
+                None => built.colour = DVec3::ZERO,
+            }
+        }
+        if let Some(shape) = &light.looks_like {
+            let shape = self.object(shape, None, None, Visibility::default(), false)?;
+            self.light_shapes.extend(shape);
+        }
         self.lights.push(built);
         Ok((self.lights.len() - 1) as u32)
     }

@@ -2,8 +2,10 @@
 //! is there before shadows, following POV-Ray's attenuation rules: the spotlight's cone
 //! (`radius`, `falloff` and `tightness` on the cosine of the angle), the cylinder light's
 //! tube, parallel lights' fixed direction, and `fade_distance`/`fade_power`. Area lights
-//! carry their grid for the shadow sampler.
+//! carry their grid for the shadow sampler; lights projected through an object carry the
+//! object.
 
+use crate::object::Object;
 use analysis::scene::{self, LightKind};
 use glam::DVec3;
 
@@ -21,6 +23,9 @@ pub struct Light {
     /// `(fade_distance, fade_power)` when fading is on.
     fade: Option<(f64, f64)>,
     pub area: Option<AreaGrid>,
+    /// The object the light shines through (`projected_through`), set by the world's
+    /// builder: the light reaches only the points whose rays to it cross the object.
+    pub projected_through: Option<Object>,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -98,12 +103,6 @@ pub struct Incoming {
 
 impl Light {
     pub fn from_scene(light: &scene::Light) -> Result<Light, String> {
-        if light.looks_like.is_some() {
-            return Err("not supported yet: looks_like".into());
-        }
-        if light.projected_through.is_some() {
-            return Err("not supported yet: projected_through".into());
-        }
         let towards = |point_at: DVec3| (point_at - light.position).normalize_or_zero();
         let kind = match light.kind {
             LightKind::Point => Kind::Point,
@@ -152,6 +151,7 @@ impl Light {
                 circular: a.circular,
                 orient: a.orient,
             }),
+            projected_through: None,
         })
     }
 

@@ -5,6 +5,7 @@
 //! on through the surface, refracted by the interiors the ray enters and leaves.
 
 mod participating;
+mod projection;
 
 use crate::atmosphere::{Atmosphere, Sky};
 use crate::bvh::Bvh;
@@ -337,8 +338,13 @@ impl<'w> Tracer<'w> {
         let world = self.world;
         let mut light_colour = if !light.shadowless && world.quality.shadows {
             self.unshadowed(light, p, &incoming)
-        } else {
+        } else if self
+            .projected_reach(light, p, incoming.direction, incoming.distance)
+            .is_some()
+        {
             incoming.colour
+        } else {
+            DVec3::ZERO
         };
         if light.media_attenuation && world.atmosphere.is_some() {
             light_colour *= self.atmospheric_attenuation(p, &incoming);
@@ -463,7 +469,13 @@ impl<'w> Tracer<'w> {
                 self.area_samples = samples;
                 light
             }
-            _ => self.filtered(p, incoming.direction, incoming.distance, incoming.colour),
+            _ => self.shadowed(
+                light,
+                p,
+                incoming.direction,
+                incoming.distance,
+                incoming.colour,
+            ),
         }
     }
 
@@ -685,7 +697,7 @@ impl AreaSampler<'_> {
         let Some((direction, distance)) = self.light.ray_to(self.point, centre) else {
             return DVec3::ZERO;
         };
-        tracer.filtered(self.point, direction, distance, self.colour)
+        tracer.shadowed(self.light, self.point, direction, distance, self.colour)
     }
 
     fn region(

@@ -3,7 +3,7 @@
 use super::object::transform_object;
 use super::value::Value;
 use super::{Evaluator, Result};
-use crate::scene::{AreaLight, Light, LightKind, Transform};
+use crate::scene::{AreaLight, Light, LightKind, Object, Transform};
 use glam::DVec3;
 use syntax::SyntaxKind::*;
 
@@ -25,10 +25,17 @@ impl Evaluator<'_> {
                 light
             }
         };
+        // `area_illumination on`, which shades with each point of an area light's grid.
+        let mut area_illumination = None;
         loop {
             let token = self.next()?;
             match token.kind {
-                R_BRACE => return Ok(light),
+                R_BRACE => {
+                    if let (Some(at), Some(_)) = (&area_illumination, &light.area) {
+                        return Err(self.unsupported(at, "area_illumination"));
+                    }
+                    return Ok(light);
+                }
                 SPOTLIGHT_KW => {
                     light.kind = LightKind::Spotlight {
                         point_at: DVec3::Z,
@@ -128,10 +135,20 @@ impl Evaluator<'_> {
                 MEDIA_INTERACTION_KW => light.media_interaction = self.optional_bool()?,
                 MEDIA_ATTENUATION_KW => light.media_attenuation = self.optional_bool()?,
                 AREA_ILLUMINATION_KW => {
-                    self.optional_bool()?;
+                    if self.optional_bool()? {
+                        area_illumination = Some(token.clone());
+                    }
                 }
-                LOOKS_LIKE_KW | PROJECTED_THROUGH_KW => {
-                    return Err(self.unsupported(&token, self.text(&token)));
+                LOOKS_LIKE_KW => {
+                    let mut object = self.braced_object()?;
+                    // POV-Ray moves the object to where the light is now (the light's
+                    // later transformations move both) and lets the light out of it.
+                    transform_object(&mut object, &Transform::translate(light.position));
+                    object.flags.no_shadow = true;
+                    light.looks_like = Some(Box::new(object));
+                }
+                PROJECTED_THROUGH_KW => {
+                    light.projected_through = Some(Box::new(self.braced_object()?));
                 }
                 PHOTONS_KW => self.light_photons(&mut light.photons)?,
                 kind if Self::starts_transform(kind) => {
@@ -149,6 +166,14 @@ impl Evaluator<'_> {
                 }
             }
         }
+    }
+
+    /// `{ OBJECT }` after `looks_like` or `projected_through`.
+    fn braced_object(&mut self) -> Result<Object> {
+        self.expect(L_BRACE, "'{'")?;
+        let object = self.object_or_identifier()?;
+        self.expect(R_BRACE, "'}'")?;
+        Ok(object)
     }
 }
 
@@ -173,5 +198,56 @@ pub fn transform_light(light: &mut Light, t: &Transform) {
         .chain(light.projected_through.iter_mut())
     {
         transform_object(object, t);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::eval::tests::{evaluate_err, evaluate_ok};
+    use crate::scene::Shape;
+    use glam::DVec3;
+
+    /// As in POV-Ray's renders: the looks_like object moves to where the light is when
+    /// it is given, and the light's later transformations move both; it casts no shadow.
+    #[test]
+    fn looks_like_objects_sit_at_the_light() {
+        let scene = evaluate_ok(
+            "light_source { <2, 1, 0> rgb 1 translate <-3, 0, 0>
+               looks_like { sphere { <1, 0, 0>, 0.5 } } rotate z*90 }",
+        );
+        let light = &scene.lights[0];
+        let shape = light.looks_like.as_ref().expect("a looks_like object");
+        assert!(shape.flags.no_shadow);
+        let centre = match &shape.shape {
+            Shape::Sphere { center, .. } => shape.transform.point(*center),
+            other => panic!("{other:?}"),
+        };
+        assert!((light.position - DVec3::new(-1.0, -1.0, 0.0)).length() < 1e-12);
+        assert!(
+            (centre - DVec3::new(-1.0, 0.0, 0.0)).length() < 1e-12,
+            "{centre}"
+        );
+    }
+
+    #[test]
+    fn projection_objects_may_be_identifiers() {
+        let scene = evaluate_ok(
+            "#declare S = box { -1, 1 }
+             light_source { <0, 5, 0> rgb 1 projected_through { S } }",
+        );
+        assert!(scene.lights[0].projected_through.is_some());
+        assert_eq!(
+            evaluate_err("light_source { 0, 1 projected_through { 3 } }"),
+            "expected an object, found '3'"
+        );
+    }
+
+    #[test]
+    fn area_illumination_is_refused_on_area_lights_only() {
+        evaluate_ok("light_source { 0, 1 area_illumination on }");
+        assert_eq!(
+            evaluate_err("light_source { 0, 1 area_light x, y, 2, 2 area_illumination on }"),
+            "not supported yet: area_illumination"
+        );
     }
 }

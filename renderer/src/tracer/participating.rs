@@ -94,8 +94,13 @@ impl<'w> Tracer<'w> {
             let mut colour = incoming.colour;
             if !light.shadowless && world.quality.shadows {
                 self.shadow_start.extend_from_slice(inside);
-                colour = self.filtered(p, incoming.direction, incoming.distance, colour);
+                colour = self.shadowed(light, p, incoming.direction, incoming.distance, colour);
                 self.shadow_start.clear();
+            } else if self
+                .projected_reach(light, p, incoming.direction, incoming.distance)
+                .is_none()
+            {
+                continue;
             }
             if light.media_attenuation && world.atmosphere.is_some() {
                 colour *= self.atmospheric_attenuation(p, &incoming);
