@@ -451,12 +451,6 @@ impl Builder {
             ),
         };
         let (shape, frame) = match &object.shape {
-            scene::Shape::Quadric { .. } => {
-                return Err(BuildError {
-                    message: "not supported yet: quadric".into(),
-                    origin: object.origin.clone(),
-                });
-            }
             scene::Shape::LightGroup(group) => {
                 let double = flags.double_illuminate || inherited_double;
                 return self.light_group(

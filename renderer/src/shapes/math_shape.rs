@@ -79,6 +79,36 @@ pub fn build(
                 identity,
             )))
         }
+        scene::Shape::Quadric {
+            squares,
+            mixed,
+            linear,
+            constant,
+        } => {
+            // The second-order polynomial A x² + B y² + C z² + D xy + E xz + F yz + G x +
+            // H y + I z + J, inside where it is negative, as POV-Ray's quadric.
+            let terms = [
+                ([2, 0, 0], squares.x),
+                ([0, 2, 0], squares.y),
+                ([0, 0, 2], squares.z),
+                ([1, 1, 0], mixed.x),
+                ([1, 0, 1], mixed.y),
+                ([0, 1, 1], mixed.z),
+                ([1, 0, 0], linear.x),
+                ([0, 1, 0], linear.y),
+                ([0, 0, 1], linear.z),
+                ([0, 0, 0], *constant),
+            ];
+            Ok(Some((
+                MathShape::Poly(Poly {
+                    order: 2,
+                    terms: terms.into_iter().filter(|&(_, c)| c != 0.0).collect(),
+                    sturm: false,
+                    region: bounded_region(object),
+                }),
+                identity,
+            )))
+        }
         scene::Shape::Isosurface(iso) => {
             let record = Arc::new(GradientRecord::default());
             reports.push(ShapeReport {
