@@ -48,9 +48,11 @@ pub fn signed(p: DVec3) -> f64 {
     let perm = permutation();
     let f = p.floor();
     let (xi, yi, zi) = (
-        (f.x.rem_euclid(256.0)) as usize,
-        (f.y.rem_euclid(256.0)) as usize,
-        (f.z.rem_euclid(256.0)) as usize,
+        // The cell's coordinates modulo 256 (two's complement wraps negatives as
+        // rem_euclid does), without a floating-point remainder.
+        (f.x as i64 & 255) as usize,
+        (f.y as i64 & 255) as usize,
+        (f.z as i64 & 255) as usize,
     );
     let (x, y, z) = (p.x - f.x, p.y - f.y, p.z - f.z);
     let (u, v, w) = (fade(x), fade(y), fade(z));

@@ -4,6 +4,7 @@
 pub mod broken_scenes;
 pub mod conformance;
 pub mod cpu_time;
+pub mod example_corpus;
 pub mod fidelity;
 pub mod image_compare;
 pub mod lsp_client;

@@ -67,6 +67,8 @@ impl Evaluator<'_> {
                 ),
             ));
         }
+        // POV-Ray allows a comma after the settings (`v_steps 4, <0, 0, 0>, ...`).
+        self.eat(COMMA)?;
         let mut points = [[DVec3::ZERO; 4]; 4];
         for (i, p) in points.iter_mut().flatten().enumerate() {
             if i > 0 {

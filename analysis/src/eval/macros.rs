@@ -149,6 +149,9 @@ impl Evaluator<'_> {
             match separator.kind {
                 COMMA => continue,
                 R_PAREN => closed = true,
+                // As in POV-Ray, the comma may be left out where an argument cannot go on,
+                // such as after an object (`Align_Object(Center_Object(T, x) -y, 0)`).
+                _ if args.len() < def.params.len() => self.unget(separator),
                 _ => {
                     return Err(self.error_at(
                         &separator,

@@ -247,6 +247,11 @@ impl Evaluator<'_> {
         }
         match token.slot.as_ref().map(|s| s.borrow().clone()) {
             Some(Value::Object(object)) => Ok(Object::clone(&object)),
+            // POV-Ray's light source is an object too: `object { Lamp rotate y*30 }` places
+            // a declared light, alone or among a CSG's children.
+            Some(Value::Light(light)) => {
+                Ok(light_only(Light::clone(&light), Some(self.span(&token))))
+            }
             Some(other) => Err(self.error_at(
                 &token,
                 format!("expected an object, found {}", other.type_name()),
@@ -266,7 +271,12 @@ impl Evaluator<'_> {
             let token = self.next()?;
             if Self::starts_object(token.kind) {
                 self.unget(token);
-                children.push(self.object()?);
+                let mut child = self.object()?;
+                if is_light_only(&child) {
+                    collect_lights(&mut child, &mut lights);
+                } else {
+                    children.push(child);
+                }
             } else if token.kind == LIGHT_SOURCE_KW {
                 self.unget(token);
                 lights.push(self.light_source()?);
@@ -546,9 +556,12 @@ impl Evaluator<'_> {
 
     /// Adds a finished top-level object to the scene; lights inside CSG join the scene's.
     pub fn add_object(&mut self, mut object: Object) {
+        let light_only = is_light_only(&object);
         collect_lights(&mut object, &mut self.lights);
-        super::radiosity::place_with_importance(&mut object, self.default_importance);
-        self.objects.push(object);
+        if !light_only {
+            super::radiosity::place_with_importance(&mut object, self.default_importance);
+            self.objects.push(object);
+        }
     }
 }
 
@@ -571,6 +584,24 @@ pub fn layer(below: Texture, top: Texture) -> std::result::Result<Texture, &'sta
         other => layers.push(other),
     }
     Ok(Texture::Layered(layers))
+}
+
+/// `object { Light }`: a union with the light and no shapes, so that the object's
+/// transformations move the light and [`collect_lights`] finds it.
+fn light_only(light: Light, origin: crate::scene::Origin) -> Object {
+    Object::new(
+        Shape::Csg {
+            op: CsgOp::Union,
+            children: Vec::new(),
+            lights: vec![light],
+        },
+        origin,
+    )
+}
+
+/// Whether `object` holds lights and no shapes: it takes no part in a CSG's geometry.
+fn is_light_only(object: &Object) -> bool {
+    matches!(&object.shape, Shape::Csg { children, lights, .. } if children.is_empty() && !lights.is_empty())
 }
 
 /// Moves the lights of CSG objects into `lights`. A light group keeps its own.

@@ -371,3 +371,52 @@ fn a_sor_needs_distinct_heights_around_its_end_slopes() {
     assert!(message.contains("different y coordinates"), "{message}");
     evaluate_ok("sor { 5, <0, 2.5> <1, 1> <1, 2> <1, 3> <0, 2.01> }");
 }
+
+/// Commas POV-Ray 3.7 lets a scene leave out or put in, as the example scenes do.
+#[test]
+fn optional_commas_of_the_example_scenes() {
+    let scene = evaluate_ok(
+        "#macro Second(A, B) B #end
+         sphere { 0, Second(sphere { 0, 1 } 2) }
+         bicubic_patch { type 1 u_steps 2 v_steps 2,
+           <0,0,0>,<1,0,0>,<2,0,0>,<3,0,0>, <0,1,0>,<1,1,0>,<2,1,0>,<3,1,0>,
+           <0,2,0>,<1,2,0>,<2,2,0>,<3,2,0>, <0,3,0>,<1,3,0>,<2,3,0>,<3,3,0> }
+         sphere { 0, 1 finish { reflection { 0.1 0.9 fresnel on } } }
+         text { ttf \"none.ttf\", \"A\", 0.1, 0 }",
+    );
+    let Some(Texture::Plain { finish, .. }) = scene.objects[2].texture.as_deref() else {
+        panic!("a plain texture");
+    };
+    let reflection = finish.reflection.as_ref().expect("a reflection");
+    assert_eq!((reflection.min.rgb.x, reflection.max.rgb.x), (0.1, 0.9));
+}
+
+/// `object { Light }` places a declared light; inside a CSG it takes no part in the shape.
+#[test]
+fn a_light_identifier_is_an_object() {
+    let scene = evaluate_ok(
+        "#declare Lamp = light_source { <0, 1, 0>, 1 }
+         object { Lamp translate x }
+         union { sphere { 0, 1 } object { Lamp translate y } }
+         intersection { sphere { 0, 1 } object { Lamp } sphere { x, 1 } }",
+    );
+    let at: Vec<glam::DVec3> = scene.lights.iter().map(|l| l.position).collect();
+    assert_eq!(
+        at,
+        [
+            glam::DVec3::new(1.0, 1.0, 0.0),
+            glam::DVec3::new(0.0, 2.0, 0.0),
+            glam::DVec3::Y
+        ]
+    );
+    let Shape::Csg { children, .. } = &scene.objects[1].shape else {
+        panic!("an intersection");
+    };
+    assert_eq!(children.len(), 2);
+}
+
+/// `quick_color` is read after a pattern's colours too.
+#[test]
+fn quick_color_follows_a_pattern() {
+    evaluate_ok("sphere { 0, 1 pigment { checker rgb 1 rgb 0 quick_color rgb 0.5 scale 2 } }");
+}

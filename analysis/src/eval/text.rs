@@ -22,6 +22,9 @@ impl Evaluator<'_> {
                 let at = self.next()?;
                 self.unget(at.clone());
                 let name = self.string()?;
+                // POV-Ray takes a comma between the font and the string, as between the
+                // other parameters (`ttf "crystal.ttf", "text", 0.1, 0`).
+                self.eat(COMMA)?;
                 match self.source.read_bytes(&name) {
                     Some(bytes) => bytes,
                     None => {

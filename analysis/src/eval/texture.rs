@@ -314,6 +314,12 @@ impl Evaluator<'_> {
                 transform_pigment(&mut pigment, &t);
                 continue;
             }
+            // `quick_color` is the colour of POV-Ray's quality levels 0 to 5, which our
+            // renderer draws with the full pigment, so it is read and left out.
+            if matches!(token.kind, QUICK_COLOR_KW | QUICK_COLOUR_KW) {
+                self.colour()?;
+                continue;
+            }
             if let Pigment::Pattern { pattern, map } = &mut pigment {
                 match token.kind {
                     COLOR_MAP_KW | COLOUR_MAP_KW => {
@@ -337,9 +343,6 @@ impl Evaluator<'_> {
                 )
             {
                 return Err(self.unsupported(&token, "warps and turbulence on an image_map"));
-            } else if matches!(token.kind, QUICK_COLOR_KW | QUICK_COLOUR_KW) {
-                self.colour()?;
-                continue;
             }
             return Err(self.error_at(
                 &token,
@@ -1038,7 +1041,8 @@ impl Evaluator<'_> {
         let first = self.scene_colour()?;
         reflection.min = first;
         reflection.max = first;
-        if self.eat(COMMA)? {
+        // POV-Ray reads the maximum with or without the comma (`reflection { 0 1 }`).
+        if self.eat(COMMA)? || self.value_follows()? {
             reflection.max = self.scene_colour()?;
         }
         loop {
