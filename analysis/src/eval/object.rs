@@ -302,6 +302,7 @@ impl Evaluator<'_> {
         let (mut bounds_are_clips, mut clips_are_bounds) = (false, false);
         // `uv_mapping` maps the textures, pigments and normals that follow it.
         let mut uv_mapping = false;
+        let mut cutaway = None;
         loop {
             let token = self.next()?;
             match token.kind {
@@ -401,9 +402,14 @@ impl Evaluator<'_> {
                 }
                 RADIOSITY_KW => self.object_radiosity(object)?,
                 SPLIT_UNION_KW => object.photons.split_union = self.optional_bool()?,
-                CUTAWAY_TEXTURES_KW => {}
+                CUTAWAY_TEXTURES_KW => cutaway = Some(token.clone()),
                 _ => {
                     self.unget(token);
+                    if let Some(at) = &cutaway
+                        && cutaway_changes_textures(object)
+                    {
+                        return Err(self.unsupported(at, "cutaway_textures"));
+                    }
                     if bounds_are_clips {
                         object.bounded_by = object.clipped_by.clone();
                     } else if clips_are_bounds {
@@ -563,6 +569,19 @@ impl Evaluator<'_> {
             self.objects.push(object);
         }
     }
+}
+
+/// Whether `cutaway_textures` would change the picture of `object`: an untextured
+/// intersection or difference whose textureless children would take their textured
+/// siblings' textures instead of the default one.
+fn cutaway_changes_textures(object: &Object) -> bool {
+    let Shape::Csg { op, children, .. } = &object.shape else {
+        return false;
+    };
+    matches!(op, CsgOp::Intersection | CsgOp::Difference)
+        && object.texture.is_none()
+        && children.iter().any(|c| c.texture.is_none())
+        && children.iter().any(|c| c.texture.is_some())
 }
 
 /// The layer `top` over the texture `below`; `Err` with POV-Ray 3.7's reason when either

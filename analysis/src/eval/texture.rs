@@ -1502,4 +1502,26 @@ mod tests {
              sphere {{ 0, 1 texture {{ checker texture {{ L }} texture {{ L }} }} }}"
         ));
     }
+
+    /// cutaway_textures is refused where it would change the picture, and accepted where
+    /// it changes nothing (every part textured, or the CSG's own texture on the cut).
+    #[test]
+    fn cutaway_textures_is_refused_where_it_matters() {
+        let red = "pigment { rgb x }";
+        assert_eq!(
+            evaluate_err(&format!(
+                "difference {{ box {{ -1, 1 {red} }} sphere {{ 1, 1 }} cutaway_textures }}"
+            )),
+            "not supported yet: cutaway_textures"
+        );
+        evaluate_ok(&format!(
+            "difference {{ box {{ -1, 1 {red} }} sphere {{ 1, 1 {red} }} cutaway_textures }}"
+        ));
+        evaluate_ok(&format!(
+            "intersection {{ box {{ -1, 1 {red} }} sphere {{ 1, 1 }} cutaway_textures {red} }}"
+        ));
+        evaluate_ok(&format!(
+            "union {{ box {{ -1, 1 {red} }} sphere {{ 1, 1 }} cutaway_textures }}"
+        ));
+    }
 }
