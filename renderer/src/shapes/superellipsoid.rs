@@ -6,6 +6,10 @@
 //! search that stops as soon as it finds a point inside; with either above 2 the shape is
 //! pinched, and the ray is first cut where it crosses the coordinate planes and the
 //! diagonal planes x = ±y, between which h has at most one extremum.
+//!
+//! Rays search on the surface's power form F = h^(2/n) - 1 instead, which has the sign and
+//! the minima of h - 1 but needs no root of a sum: with the usual exponents (e and n of 1,
+//! 0.5, 0.25, 0.2, ...) it is products alone, where h costs four calls of pow.
 
 use super::OrderedCrossings;
 use crate::ray::Ray;
@@ -23,6 +27,42 @@ pub struct Superellipsoid {
     p_xy: f64,
     /// 2/n: the exponent between the x-y norm and z.
     p_z: f64,
+    /// The powers of the power form: 2/e, e/n (of the x-y sum), 2/n; and n/2, which turns
+    /// F + 1 back into h.
+    xy: Power,
+    nest: Power,
+    z: Power,
+    root: Power,
+}
+
+/// x^p for x >= 0, an exponent fixed per shape. Integer exponents, the common case, are
+/// repeated multiplication instead of pow.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Power {
+    One,
+    Integer(i32),
+    Real(f64),
+}
+
+impl Power {
+    fn new(p: f64) -> Power {
+        let rounded = p.round();
+        if (p - rounded).abs() > 1e-12 * p.abs() || rounded.abs() > 64.0 {
+            Power::Real(p)
+        } else if rounded == 1.0 {
+            Power::One
+        } else {
+            Power::Integer(rounded as i32)
+        }
+    }
+
+    fn of(self, x: f64) -> f64 {
+        match self {
+            Power::One => x,
+            Power::Integer(n) => x.powi(n),
+            Power::Real(p) => x.powf(p),
+        }
+    }
 }
 
 /// ‖(a, b)‖_p for non-negative a and b, factored by the larger so that large exponents
@@ -41,21 +81,25 @@ impl Superellipsoid {
         Superellipsoid {
             p_xy: 2.0 / e,
             p_z: 2.0 / n,
+            xy: Power::new(2.0 / e),
+            nest: Power::new(e / n),
+            z: Power::new(2.0 / n),
+            root: Power::new(n / 2.0),
         }
+    }
+
+    /// F = h^(2/n) - 1 = (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) - 1.
+    fn power_form(&self, p: DVec3) -> f64 {
+        let across = self.xy.of(p.x.abs()) + self.xy.of(p.y.abs());
+        self.nest.of(across) + self.z.of(p.z.abs()) - 1.0
     }
 
     fn convex(&self) -> bool {
         self.p_xy >= 1.0 && self.p_z >= 1.0
     }
 
-    /// The nested norm h; the surface is h = 1.
-    pub fn gauge(&self, p: DVec3) -> f64 {
-        let across = p_norm(p.x.abs(), p.y.abs(), self.p_xy);
-        p_norm(across, p.z.abs(), self.p_z)
-    }
-
     pub fn inside(&self, p: DVec3) -> bool {
-        self.gauge(p) < 1.0
+        self.power_form(p) < 0.0
     }
 
     /// The gradient of h: for a p-norm N of (a, b), ∂N/∂a = (a/N)^(p-1).
@@ -84,8 +128,8 @@ impl Superellipsoid {
         if n.is_finite() { n } else { p }
     }
 
-    /// The crossings in one stretch where φ has at most one interior extremum; true when
-    /// `take` has had enough.
+    /// The crossings in one stretch where φ, the power form along the ray, has at most one
+    /// interior extremum; true when `take` has had enough.
     #[allow(clippy::too_many_arguments)]
     fn stretch(
         &self,
@@ -117,8 +161,10 @@ impl Superellipsoid {
                     || take(refine(phi, best_t, fm, b, fb));
             }
             // A convex gauge is Lipschitz with |∇h| <= √3: no crossing can hide in a
-            // bracket too short to drop below zero from here.
-            if self.convex() && sign > 0.0 && best > lipschitz * (hi - lo) {
+            // bracket too short to drop below zero from here. φ is the power form; h - 1
+            // is its root.
+            if self.convex() && sign > 0.0 && self.root.of(best + 1.0) - 1.0 > lipschitz * (hi - lo)
+            {
                 return false;
             }
             if hi - lo <= 1e-13 * (b - a).max(f64::MIN_POSITIVE) {
@@ -151,7 +197,7 @@ impl OrderedCrossings for Superellipsoid {
         if t0 >= t1 {
             return;
         }
-        let phi = |t: f64| self.gauge(ray.at(t)) - 1.0;
+        let phi = |t: f64| self.power_form(ray.at(t));
         // Where the ray changes octant or crosses a diagonal plane, for pinched shapes.
         let mut cuts = [0.0; 7];
         let mut n = 0;
@@ -288,10 +334,34 @@ mod tests {
         let ts: Vec<f64> = roots.as_slice().iter().map(|r| r.t).collect();
         assert_eq!(ts.len(), 2, "{ts:?}");
         for t in ts {
-            assert!(s.gauge(ray.at(t)) - 1.0 < 1e-9);
+            assert!(s.power_form(ray.at(t)).abs() < 1e-9);
         }
         assert!(s.inside(DVec3::new(0.9, 0.0, 0.0)));
         assert!(!s.inside(DVec3::new(0.5, 0.5, 0.5)));
+    }
+
+    /// The power form is the nested norm raised to 2/n, less one, for integer and
+    /// fractional exponents alike.
+    #[test]
+    fn the_power_form_is_a_power_of_the_nested_norm() {
+        let points = [
+            DVec3::new(0.3, -0.5, 0.7),
+            DVec3::new(0.9, 0.1, -0.05),
+            DVec3::new(-0.2, 0.0, 0.95),
+        ];
+        for (e, n) in [(1.0, 1.0), (0.2, 0.2), (1.0, 0.3), (2.5, 2.5), (0.5, 3.0)] {
+            let s = Superellipsoid::new(e, n);
+            for p in points {
+                let across = p_norm(p.x.abs(), p.y.abs(), 2.0 / e);
+                let h = p_norm(across, p.z.abs(), 2.0 / n);
+                let expected = h.powf(2.0 / n) - 1.0;
+                let got = s.power_form(p);
+                assert!(
+                    (got - expected).abs() < 1e-12,
+                    "<{e}, {n}> at {p}: {got} against {expected}"
+                );
+            }
+        }
     }
 
     #[test]
