@@ -105,6 +105,7 @@ impl Typst {
         let status = Command::new(workspace_root().join("scripts/install-package"))
             .arg(&package_path)
             .env("CARGO_TARGET_DIR", target)
+            .stdout(std::process::Stdio::null())
             .status()
             .expect("cannot run scripts/install-package");
         assert!(status.success(), "scripts/install-package failed");
@@ -167,9 +168,19 @@ impl Typst {
                     }
                 }
                 let name = scene.file_name().and_then(|n| n.to_str()).expect("UTF-8");
+                // A Typst dictionary: `(:)` when empty, `("a": .., )` otherwise.
+                let dictionary = |entries: String| {
+                    if entries.is_empty() {
+                        "(:)".to_owned()
+                    } else {
+                        format!("({entries})")
+                    }
+                };
                 format!(
                     "try-render(read(\"{name}\"), width: {WIDTH}, height: {HEIGHT}, \
-                     antialias: false, includes: ({includes}:), files: ({files}:)).error"
+                     antialias: false, includes: {}, files: {}).error",
+                    dictionary(includes),
+                    dictionary(files)
                 )
             }
         };
