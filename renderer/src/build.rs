@@ -9,6 +9,7 @@ use crate::interior::Interior;
 use crate::light::Light;
 use crate::material::{Material, Surface};
 use crate::object::{Csg, CsgKind, Leaf, Object, Visibility};
+use crate::photons::{PhotonMap, SurfacePhotons, add_targets};
 use crate::radiosity::Radiosity;
 use crate::shapes::bicubic_patch;
 use crate::shapes::mesh::{Hierarchy, MeshData};
@@ -41,12 +42,6 @@ pub struct BuildSettings {
 }
 
 pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, BuildError> {
-    if let Some(photons) = &scene.settings.photons {
-        return Err(BuildError {
-            message: "not supported yet: photons".into(),
-            origin: photons.origin.clone(),
-        });
-    }
     let mut builder = Builder {
         subsurface: scene.settings.subsurface.is_some() && settings.quality >= 9,
         materials: HashMap::new(),
@@ -65,11 +60,17 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
     for light in &scene.lights {
         builder.add_light(light)?;
     }
+    let quality = Quality::from_level(settings.quality);
+    let photons = scene.settings.photons.as_ref().filter(|_| quality.photons);
+    let mut targets = Vec::new();
     let mut objects = Vec::with_capacity(scene.objects.len());
     for object in &scene.objects {
         if let Some(mut built) = builder.object(object, None, None, Visibility::default(), false)? {
             if let Object::Leaf(leaf) = &mut built {
                 leaf.standalone = true;
+            }
+            if photons.is_some() {
+                add_targets(object, &built, &mut targets)?;
             }
             objects.push(built);
         }
@@ -92,6 +93,27 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
     {
         return Err(BuildError {
             message: "not supported yet: light groups in a scene with media".into(),
+            origin: group.origin.clone(),
+        });
+    }
+    // Photons of a projected light would have to pass through its object first.
+    if let Some(light) = scene
+        .lights
+        .iter()
+        .find(|l| l.projected_through.is_some() && (l.photons.refraction || l.photons.reflection))
+        && photons.is_some()
+    {
+        return Err(BuildError {
+            message: "not supported yet: photons from a light with projected_through".into(),
+            origin: light.origin.clone(),
+        });
+    }
+    // Photons of a light group's lights would light objects outside the group.
+    if let Some(group) = builder.light_groups.iter().find(|g| !g.lights.is_empty())
+        && photons.is_some()
+    {
+        return Err(BuildError {
+            message: "not supported yet: light groups in a scene with photons".into(),
             origin: group.origin.clone(),
         });
     }
@@ -134,8 +156,7 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
         None => None,
     };
     let light_sets = builder.light_sets();
-    let quality = Quality::from_level(settings.quality);
-    Ok(World {
+    let mut world = World {
         bvh,
         lights: builder.lights,
         light_sets,
@@ -158,7 +179,12 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
         atmosphere,
         camera_interiors,
         radiosity: Radiosity::from_scene(scene, &quality),
-    })
+        photons: None,
+    };
+    if let Some(settings) = photons {
+        world.photons = PhotonMap::shoot(&world, settings, &targets)?;
+    }
+    Ok(world)
 }
 
 /// The interiors of the objects around the camera that media rays must start in: those
@@ -663,6 +689,7 @@ impl Builder {
         );
         leaf.double_illuminate = flags.double_illuminate || inherited_double;
         leaf.light_set = self.light_set;
+        leaf.photons = SurfacePhotons::from_scene(&object.photons, visibility.no_shadow);
         if let scene::Shape::Mesh(mesh) = &object.shape
             && !mesh.textures.is_empty()
         {

@@ -8,6 +8,11 @@ use analysis::scene::{self, Colour};
 #[derive(Debug, Clone)]
 pub struct Interior {
     pub ior: f64,
+    /// The ratio of the violet index of refraction to the red one; 1 when the interior
+    /// does not disperse light, as for an interior without `ior`, which POV-Ray does not
+    /// disperse.
+    pub dispersion: f64,
+    pub dispersion_samples: u32,
     pub fade_distance: f64,
     pub fade_power: f64,
     pub fade_colour: Colour,
@@ -31,6 +36,12 @@ impl Interior {
             .collect::<Result<Vec<_>, String>>()?;
         Ok(Interior {
             ior: interior.ior,
+            dispersion: if interior.ior_given {
+                interior.dispersion
+            } else {
+                1.0
+            },
+            dispersion_samples: interior.dispersion_samples,
             fade_distance: interior.fade_distance,
             fade_power: interior.fade_power,
             fade_colour: interior.fade_colour,

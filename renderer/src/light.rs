@@ -6,7 +6,7 @@
 //! object.
 
 use crate::object::Object;
-use analysis::scene::{self, LightKind};
+use analysis::scene::{self, LightKind, LightPhotons};
 use glam::DVec3;
 
 #[derive(Debug, Clone)]
@@ -26,6 +26,8 @@ pub struct Light {
     /// The object the light shines through (`projected_through`), set by the world's
     /// builder: the light reaches only the points whose rays to it cross the object.
     pub projected_through: Option<Object>,
+    /// Which photons the light shoots.
+    pub photons: LightPhotons,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -152,7 +154,19 @@ impl Light {
                 orient: a.orient,
             }),
             projected_through: None,
+            photons: light.photons,
         })
+    }
+
+    /// The direction of a parallel or cylinder light's rays; `None` for lights that shine
+    /// from a point.
+    pub fn parallel_axis(&self) -> Option<DVec3> {
+        match self.kind {
+            Kind::Parallel { direction } | Kind::Cylinder { direction, .. } => {
+                direction.try_normalize()
+            }
+            Kind::Point | Kind::Spot { .. } => None,
+        }
     }
 
     /// The direction and shadow-ray length from `point` to the light placed at `centre`.

@@ -139,27 +139,33 @@ fn bumped(
 ) -> DVec3 {
     let local = pattern::warped(pattern, pattern.transform.inverse.transform_point3(p));
     let local_normal = (into_pattern_space(pattern) * n).normalize_or_zero();
+    // The bump patterns' own pushes take the point after the classic turbulence, as the
+    // patterns' values do (the pyramid below gets it through the pattern's evaluation).
+    let turbulent = match &pattern.turbulence {
+        Some(t) => local + pattern::warp::displacement(t, local),
+        None => local,
+    };
     let bumped = match pattern.kind {
-        PatternKind::Bumps => local_normal + noise::vector(local) * bump_size,
+        PatternKind::Bumps => local_normal + noise::vector(turbulent) * bump_size,
         PatternKind::Dents => {
-            let depth = noise::noise(local).powi(3);
-            local_normal + noise::vector(local) * (-bump_size * depth)
+            let depth = noise::noise(turbulent).powi(3);
+            local_normal + noise::vector(turbulent) * (-bump_size * depth)
         }
         PatternKind::Wrinkles => {
             let mut v = DVec3::ZERO;
             let mut scale = 1.0;
             for _ in 0..10 {
-                v += (noise::vector(local * scale) / scale).abs();
+                v += (noise::vector(turbulent * scale) / scale).abs();
                 scale *= 2.0;
             }
             local_normal + v * bump_size
         }
         PatternKind::Ripples | PatternKind::Waves => {
             let own = matches!(pattern.kind, PatternKind::Waves);
-            local_normal + waves::push(local, pattern.frequency, pattern.phase, own) * bump_size
+            local_normal + waves::push(turbulent, pattern.frequency, pattern.phase, own) * bump_size
         }
         PatternKind::Quilted { control0, control1 } => {
-            local_normal + pattern::quilt_offset(local, control0, control1) * bump_size
+            local_normal + pattern::quilt_offset(turbulent, control0, control1) * bump_size
         }
         PatternKind::Facets {
             coords,

@@ -8,6 +8,7 @@
 use crate::bounds::Aabb;
 use crate::interior::Interior;
 use crate::material::{Layer, Material, transmitted_through};
+use crate::photons::SurfacePhotons;
 use crate::ray::{Ray, RayKind};
 use crate::shapes::{Roots, Shape};
 use crate::texture_point::TexturePoint;
@@ -65,6 +66,8 @@ pub struct Leaf {
     /// A whole object of its own, not part of a CSG: its surface alone decides whether it
     /// blocks a ray.
     pub standalone: bool,
+    /// What the surface does with photons.
+    pub photons: SurfacePhotons,
     pub bounds: Aabb,
 }
 
@@ -102,6 +105,7 @@ impl Leaf {
             double_illuminate: false,
             importance: 1.0,
             standalone: false,
+            photons: SurfacePhotons::default(),
             bounds,
         }
     }

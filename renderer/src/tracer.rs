@@ -10,12 +10,15 @@ mod projection;
 use crate::atmosphere::{Atmosphere, Sky};
 use crate::bvh::Bvh;
 use crate::colour::Sample;
+use crate::dispersion::Spectra;
 use crate::fast_math;
 use crate::interior::Interior;
 use crate::light::{Incoming, Light};
 use crate::material::Layer;
 use crate::object::{Hit, Leaf, Query};
+use crate::photons::{GatherScratch, PhotonMap};
 use crate::ray::{Ray, RayKind};
+use crate::refraction::{self, Inside};
 use crate::texture_point::TexturePoint;
 use analysis::scene::Finish;
 use glam::DVec3;
@@ -34,6 +37,8 @@ pub struct Quality {
     pub secondary_rays: bool,
     /// Radiosity (and, in POV-Ray, media and subsurface scattering).
     pub radiosity: bool,
+    /// The photon pass and the caustics it draws.
+    pub photons: bool,
 }
 
 impl Quality {
@@ -45,6 +50,7 @@ impl Quality {
             normals: level >= 6,
             secondary_rays: level >= 8,
             radiosity: level >= 9,
+            photons: level >= 6,
         }
     }
 }
@@ -84,9 +90,16 @@ pub struct World {
     pub camera_interiors: Vec<Arc<Interior>>,
     /// Indirect light, when the scene asks for radiosity and the quality allows it.
     pub radiosity: Option<crate::radiosity::Radiosity>,
+    /// The photons the lights shot, when the scene uses photons.
+    pub photons: Option<PhotonMap>,
 }
 
 impl World {
+    /// The smallest ray parameter that counts as leaving `p`, relative to the scene's size.
+    pub fn tolerance(&self, p: DVec3) -> f64 {
+        1e-9 * (p.abs().max_element() + self.scale)
+    }
+
     /// The lights that shine on `leaf`.
     pub fn lights_for(&self, leaf: &Leaf) -> impl Iterator<Item = &Light> {
         self.light_sets[leaf.light_set as usize]
@@ -104,8 +117,13 @@ pub(crate) fn greyscale(c: DVec3) -> f64 {
 pub struct Tracer<'w> {
     pub(crate) world: &'w World,
     scratch: Vec<Hit<'w>>,
-    /// The interiors the current ray is inside, innermost last (compared by identity).
-    interiors: Vec<&'w Interior>,
+    /// The interiors the current ray is inside and its band of the spectrum.
+    inside: Inside<'w>,
+    /// The spectral bands of dispersing interiors.
+    spectra: Spectra,
+    /// The photons lighting the current point, as lights, and the space to gather them.
+    photon_lights: Vec<(DVec3, DVec3)>,
+    gather_scratch: GatherScratch,
     /// The opaque object that last blocked a shadow ray: neighbouring shadow rays are
     /// usually blocked by it too, and one shape test is cheaper than the search.
     last_blocker: Option<&'w Leaf>,
@@ -123,7 +141,10 @@ impl<'w> Tracer<'w> {
         Tracer {
             world,
             scratch: Vec::new(),
-            interiors: Vec::new(),
+            inside: Inside::default(),
+            spectra: Spectra::default(),
+            photon_lights: Vec::new(),
+            gather_scratch: GatherScratch::default(),
             last_blocker: None,
             area_samples: Vec::new(),
             shadow_start: Vec::new(),
@@ -134,17 +155,15 @@ impl<'w> Tracer<'w> {
         }
     }
 
-    /// The smallest ray parameter that counts as leaving `p`, relative to the scene's size.
     fn tolerance(&self, p: DVec3) -> f64 {
-        1e-9 * (p.abs().max_element() + self.world.scale)
+        self.world.tolerance(p)
     }
 
     /// The sample a camera ray brings back.
     pub fn trace_primary(&mut self, ray: &Ray) -> Sample {
-        self.interiors.clear();
         let world = self.world;
-        self.interiors
-            .extend(world.camera_interiors.iter().map(|i| &**i));
+        self.inside
+            .start_in(world.camera_interiors.iter().map(|i| &**i));
         self.trace(ray, RayKind::Primary, 1, 1.0)
     }
 
@@ -210,7 +229,7 @@ impl<'w> Tracer<'w> {
                 .map_or(DVec3::ZERO, |l| l.pigment.colour_at(at).rgb);
             return Sample::new(top, 0.0);
         }
-        let relative_ior = self.relative_ior(&leaf.interior);
+        let relative_ior = self.inside.relative_ior(&leaf.interior);
         let mut indirect = crate::radiosity::Indirect::new(p, raw_normal, level);
         let mut colour = DVec3::ZERO;
         // What the layers so far let through, and how much of it counts.
@@ -219,6 +238,13 @@ impl<'w> Tracer<'w> {
         let mut top_normal = raw_normal;
         // Each layer's reflectivity, normal and exponent, for after the loop.
         let mut reflections: Vec<(DVec3, DVec3, f64)> = Vec::new();
+        let mut photon_lights = std::mem::take(&mut self.photon_lights);
+        photon_lights.clear();
+        if let Some(photons) = &world.photons
+            && leaf.photons.collect()
+        {
+            photons.lights_at(p, raw_normal, &mut self.gather_scratch, &mut photon_lights);
+        }
         for (i, layer) in layers.iter().enumerate() {
             if trans <= world.adc_bailout {
                 break;
@@ -246,19 +272,27 @@ impl<'w> Tracer<'w> {
 
             let ambient = self.ambient(finish, pigment.rgb, normal, opacity, &mut indirect);
             let mut own = pigment.rgb * (ambient + finish.emission) * opacity;
+            let shading = Shading {
+                p,
+                normal,
+                ray,
+                surface: pigment.rgb,
+                finish,
+                opacity,
+                double_illuminate: leaf.double_illuminate,
+            };
             // The pretrace wants only the radiosity samples a camera ray's path takes.
             let vain_pretrace = self.vain_pretrace();
             for light in world.lights_for(leaf).filter(|_| !vain_pretrace) {
-                own += self.direct_light(
-                    light,
-                    p,
-                    normal,
-                    ray,
-                    pigment.rgb,
-                    finish,
-                    opacity,
-                    leaf.double_illuminate,
-                );
+                own += self.direct_light(light, &shading);
+            }
+            for &(light, from) in photon_lights.iter().filter(|_| !vain_pretrace) {
+                let lit = Lit {
+                    colour: light,
+                    direction: from,
+                    highlights: true,
+                };
+                own += self.lit(&lit, &shading);
             }
             colour += own * filter;
 
@@ -268,6 +302,7 @@ impl<'w> Tracer<'w> {
             }
             trans = fast_math::min(greyscale(filter).abs(), 1.0);
         }
+        self.photon_lights = photon_lights;
 
         // Light from behind the surface.
         let mut transmit = 0.0;
@@ -311,30 +346,20 @@ impl<'w> Tracer<'w> {
     /// Diffuse light and highlights from one light source. A light behind the surface
     /// lights it only through `double_illuminate` (both sides alike) or the finish's
     /// backside diffuse (`diffuse front, back`, without highlights).
-    #[allow(clippy::too_many_arguments)]
-    fn direct_light(
-        &mut self,
-        light: &Light,
-        p: DVec3,
-        normal: DVec3,
-        ray: &Ray,
-        surface: DVec3,
-        finish: &Finish,
-        opacity: f64,
-        double_illuminate: bool,
-    ) -> DVec3 {
+    fn direct_light(&mut self, light: &Light, at: &Shading<'_>) -> DVec3 {
+        let Shading {
+            p,
+            normal,
+            finish,
+            double_illuminate,
+            ..
+        } = *at;
         let Some(incoming) = light.incoming(p) else {
             return DVec3::ZERO;
         };
-        let cos_signed = normal.dot(incoming.direction);
-        let mut backside = false;
-        if cos_signed < 1e-10 && !double_illuminate {
-            if finish.diffuse_back == 0.0 {
-                return DVec3::ZERO;
-            }
-            backside = true;
+        if facing(normal, incoming.direction, finish, double_illuminate).is_none() {
+            return DVec3::ZERO;
         }
-        let cos_in = cos_signed.abs();
         let world = self.world;
         let mut light_colour = if !light.shadowless && world.quality.shadows {
             self.unshadowed(light, p, &incoming)
@@ -352,6 +377,31 @@ impl<'w> Tracer<'w> {
         if light_colour.max_element() < 1e-10 {
             return DVec3::ZERO;
         }
+        let lit = Lit {
+            colour: light_colour,
+            direction: incoming.direction,
+            // POV-Ray's shadowless (fill) lights cause no highlights.
+            highlights: !light.shadowless,
+        };
+        self.lit(&lit, at)
+    }
+
+    /// Diffuse light and highlights from light arriving unshadowed, from a light source or
+    /// from photons.
+    fn lit(&self, lit: &Lit, at: &Shading<'_>) -> DVec3 {
+        let Shading {
+            p,
+            normal,
+            ray,
+            surface,
+            finish,
+            opacity,
+            double_illuminate,
+        } = *at;
+        let Some(backside) = facing(normal, lit.direction, finish, double_illuminate) else {
+            return DVec3::ZERO;
+        };
+        let cos_in = normal.dot(lit.direction).abs();
         let mut colour = DVec3::ZERO;
         let diffuse = if backside {
             finish.diffuse_back
@@ -369,36 +419,35 @@ impl<'w> Tracer<'w> {
                 // Graininess: a fixed pseudo-random dimming per point.
                 intensity -= grain(p) * finish.crand;
             }
-            colour += light_colour * surface * intensity;
+            colour += lit.colour * surface * intensity;
         }
-        // POV-Ray's shadowless (fill) lights and backside light cause no highlights, and
-        // radiosity rays see none.
-        if light.shadowless || backside || self.in_radiosity_ray() {
-            return self.iridescent(colour, finish, p, normal, ray, incoming.direction);
+        // Backside light causes no highlights, and radiosity rays see none.
+        if !lit.highlights || backside || self.in_radiosity_ray() {
+            return self.iridescent(colour, finish, p, normal, ray, lit.direction);
         }
         if finish.phong > 0.0 {
             let reflected = ray.direction - 2.0 * ray.direction.dot(normal) * normal;
-            let cos = reflected.dot(incoming.direction);
+            let cos = reflected.dot(lit.direction);
             if cos > 0.0 && (finish.phong_size < 60.0 || cos > 0.0008) {
                 let intensity = finish.phong * cos.powf(finish.phong_size);
-                let tint = metallic_tint(finish.metallic, surface, normal.dot(incoming.direction));
-                colour += light_colour * tint * intensity;
+                let tint = metallic_tint(finish.metallic, surface, normal.dot(lit.direction));
+                colour += lit.colour * tint * intensity;
             }
         }
         if finish.specular > 0.0 {
-            let halfway = (incoming.direction - ray.direction) * 0.5;
+            let halfway = (lit.direction - ray.direction) * 0.5;
             let len = halfway.length();
             if len > 0.0 {
                 let cos = normal.dot(halfway) / len;
                 if cos > 0.0 {
                     let intensity = finish.specular * cos.powf(1.0 / finish.roughness);
-                    let ndotl = halfway.dot(incoming.direction) / len;
+                    let ndotl = halfway.dot(lit.direction) / len;
                     let tint = metallic_tint(finish.metallic, surface, ndotl);
-                    colour += light_colour * tint * intensity;
+                    colour += lit.colour * tint * intensity;
                 }
             }
         }
-        self.iridescent(colour, finish, p, normal, ray, incoming.direction)
+        self.iridescent(colour, finish, p, normal, ray, lit.direction)
     }
 
     /// Thin-film interference (`irid { amount thickness turbulence }`): each channel of a
@@ -479,8 +528,21 @@ impl<'w> Tracer<'w> {
         }
     }
 
+    /// Whether shadow rays towards `light` stop at refracting photon targets.
+    fn photons_stop(&self, light: &Light) -> bool {
+        self.world.photons.is_some() && light.photons.refraction
+    }
+
     /// `colour` after the shadow ray from `p` along `direction` over `distance`.
-    fn filtered(&mut self, p: DVec3, direction: DVec3, distance: f64, colour: DVec3) -> DVec3 {
+    /// `photons_stop`: refracting photon targets stop the light, whose photons bring it.
+    fn filtered(
+        &mut self,
+        p: DVec3,
+        direction: DVec3,
+        distance: f64,
+        colour: DVec3,
+        photons_stop: bool,
+    ) -> DVec3 {
         let mut colour = colour;
         let mut origin = p;
         let mut remaining = distance;
@@ -512,6 +574,9 @@ impl<'w> Tracer<'w> {
                 return colour;
             };
             let leaf: &'w Leaf = hit.leaf;
+            if photons_stop && leaf.photons.stops_light_for_photons() {
+                return DVec3::ZERO;
+            }
             if !leaf.transmits {
                 if leaf.standalone {
                     self.last_blocker = Some(leaf);
@@ -538,23 +603,9 @@ impl<'w> Tracer<'w> {
         DVec3::ZERO
     }
 
-    /// The relative index of refraction at a surface of `interior`, as the ray sees it.
-    fn relative_ior(&self, interior: &Interior) -> f64 {
-        match self.interiors.as_slice() {
-            [] => interior.ior,
-            [.., outer, last] if std::ptr::eq(*last, interior) => outer.ior / interior.ior,
-            [last] if std::ptr::eq(*last, interior) => 1.0 / interior.ior,
-            [.., last] => interior.ior / last.ior,
-        }
-    }
-
     /// Distance attenuation inside the interior the ray is leaving.
     fn fade(&self, interior: &Interior, depth: f64) -> DVec3 {
-        let inside = self
-            .interiors
-            .last()
-            .is_some_and(|i| std::ptr::eq(*i, interior));
-        if inside {
+        if self.inside.is_innermost(interior) {
             fade(interior, depth)
         } else {
             DVec3::ONE
@@ -563,6 +614,8 @@ impl<'w> Tracer<'w> {
 
     /// The light arriving through the surface: transmitted straight on, or refracted;
     /// `true` with the reflected light when the refraction is total internal reflection.
+    /// White light crossing into or out of a dispersing interior splits into the bands of
+    /// the spectrum, each refracted on its own; a split ray stays split.
     #[allow(clippy::too_many_arguments)]
     fn transmitted(
         &mut self,
@@ -577,80 +630,108 @@ impl<'w> Tracer<'w> {
             return (Sample::default(), false);
         }
         let interior: &'w Interior = &leaf.interior;
-        let saved = self.interiors.clone();
-        let position = self
-            .interiors
-            .iter()
-            .position(|i| std::ptr::eq(*i, interior));
-        let ior = match (self.interiors.last(), position) {
-            (None, _) => {
-                self.interiors.push(interior);
-                1.0 / interior.ior
-            }
-            (Some(last), _) if std::ptr::eq(*last, interior) => {
-                self.interiors.pop();
-                match self.interiors.last() {
-                    None => interior.ior,
-                    Some(outer) => interior.ior / outer.ior,
-                }
-            }
-            (Some(_), Some(pos)) => {
-                // Leaving an overlap of two interiors: no bend, as POV-Ray has it.
-                self.interiors.remove(pos);
-                1.0
-            }
-            (Some(outer), None) => {
-                let ior = outer.ior / interior.ior;
-                self.interiors.push(interior);
-                ior
-            }
-        };
-        let result = if (ior - 1.0).abs() < 1e-10 {
-            let next = Ray::new(p, ray.direction);
-            (
-                self.trace(&next, RayKind::Transmitted, level + 1, weight),
-                false,
-            )
-        } else {
-            let mut n = ray.direction.dot(normal);
-            let local = if n <= 0.0 {
-                n = -n;
-                normal
-            } else {
-                -normal
-            };
-            let t = 1.0 + ior * ior * (n * n - 1.0);
-            if t < 0.0 {
-                self.interiors = saved.clone();
-                let reflected = self.reflect(ray, p, normal, level, weight);
-                (Sample::new(reflected, 0.0), true)
-            } else {
-                let direction =
-                    (ior * ray.direction + (ior * n - t.sqrt()) * local).normalize_or_zero();
+        if self.inside.band.is_some() || !crate::dispersion::disperses(interior) {
+            return self.refracted(ray, p, normal, interior, level, weight);
+        }
+        let bands = self.spectra.bands(interior.dispersion_samples).to_vec();
+        let mut total = Sample::default();
+        let mut all_reflected = true;
+        for band in bands {
+            self.inside.band = Some(band.position);
+            let band_weight = weight * band.colour.max_element();
+            let (s, reflected) = self.refracted(ray, p, normal, interior, level, band_weight);
+            all_reflected &= reflected;
+            total = total
+                + Sample::new(
+                    s.colour * band.colour,
+                    s.transmit * band.colour.element_sum() / 3.0,
+                );
+        }
+        self.inside.band = None;
+        (total, all_reflected)
+    }
+
+    /// [`Self::transmitted`] for one band, or white light where nothing disperses.
+    fn refracted(
+        &mut self,
+        ray: &Ray,
+        p: DVec3,
+        normal: DVec3,
+        interior: &'w Interior,
+        level: u32,
+        weight: f64,
+    ) -> (Sample, bool) {
+        let saved = self.inside.clone();
+        let ior = self.inside.cross(interior);
+        let result = match refraction::refract(ray.direction, normal, ior) {
+            Some(direction) => {
                 let next = Ray::new(p, direction);
                 (
                     self.trace(&next, RayKind::Transmitted, level + 1, weight),
                     false,
                 )
             }
+            None => {
+                self.inside = saved.clone();
+                let reflected = self.reflect(ray, p, normal, level, weight);
+                (Sample::new(reflected, 0.0), true)
+            }
         };
-        self.interiors = saved;
+        self.inside = saved;
         result
     }
 
     /// The colour seen in the mirror direction.
     fn reflect(&mut self, ray: &Ray, p: DVec3, normal: DVec3, level: u32, weight: f64) -> DVec3 {
-        let direction =
-            (ray.direction - 2.0 * ray.direction.dot(normal) * normal).normalize_or_zero();
-        let next = Ray::new(p, direction);
+        let next = Ray::new(p, refraction::reflect(ray.direction, normal));
         self.trace(&next, RayKind::Reflected, level + 1, weight)
             .colour
     }
 }
 
+/// A surface point as the lighting model sees it: where it is, its (perturbed) normal
+/// facing the viewer, the ray that found it, its pigment colour and finish, how opaque the
+/// layer is, and whether both sides take light alike.
+#[derive(Clone, Copy)]
+struct Shading<'a> {
+    p: DVec3,
+    normal: DVec3,
+    ray: &'a Ray,
+    surface: DVec3,
+    finish: &'a Finish,
+    opacity: f64,
+    double_illuminate: bool,
+}
+
+/// Light arriving at a point, ready for the lighting model.
+struct Lit {
+    colour: DVec3,
+    /// Unit vector towards where the light comes from.
+    direction: DVec3,
+    highlights: bool,
+}
+
+/// Whether a surface facing `normal` takes light from `direction`: `Some(false)` on its
+/// front, `Some(true)` from behind through the finish's backside diffuse, `None` not at
+/// all. `double_illuminate` lights both sides alike.
+fn facing(
+    normal: DVec3,
+    direction: DVec3,
+    finish: &Finish,
+    double_illuminate: bool,
+) -> Option<bool> {
+    if normal.dot(direction) >= 1e-10 || double_illuminate {
+        Some(false)
+    } else if finish.diffuse_back != 0.0 {
+        Some(true)
+    } else {
+        None
+    }
+}
+
 /// How much light is left after `depth` inside an interior with `fade_distance`,
 /// `fade_power` and `fade_color`.
-fn fade(interior: &Interior, depth: f64) -> DVec3 {
+pub(crate) fn fade(interior: &Interior, depth: f64) -> DVec3 {
     if interior.fade_distance.abs() <= 1e-10 || interior.fade_power <= 0.0 {
         return DVec3::ONE;
     }
@@ -781,7 +862,7 @@ fn oriented_axes(axis1: DVec3, to_light: DVec3) -> (DVec3, DVec3) {
 }
 
 /// How much the surface reflects, with POV-Ray's variable, Fresnel and metallic rules.
-fn reflectivity(finish: &Finish, surface: DVec3, cos: f64, relative_ior: f64) -> DVec3 {
+pub(crate) fn reflectivity(finish: &Finish, surface: DVec3, cos: f64, relative_ior: f64) -> DVec3 {
     let Some(r) = &finish.reflection else {
         return DVec3::ZERO;
     };

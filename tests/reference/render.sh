@@ -3,7 +3,8 @@
 # POV-Ray 3.7, one thread (+WT1), at each scene's settings, into png/NAME.png, and records
 # POV-Ray's own parse and trace times in povray-times.txt for the benchmark: the CPU
 # seconds it reports, which other work on the machine disturbs less than wall time (the
-# trace time includes the radiosity pretrace, which POV-Ray reports apart).
+# trace time includes the radiosity pretrace and the photon pass, which POV-Ray reports
+# apart).
 #
 # Scenes that include standard include files get ours (analysis/stdinc), not POV-Ray's:
 # the designs in them are our own, and the references must show what our files describe.
@@ -41,11 +42,14 @@ while read -r line; do
     # shellcheck disable=SC2086 # the options are separate words on purpose
     POVINI="$no_ini" povray "+I$root/$scene" "+O$here/png/$name.png" +FN -D -V +WT1 $options \
         "+L$(dirname "$root/$scene")" "+L$root/analysis/stdinc" >"$log" 2>&1 || { cat "$log" >&2; exit 1; }
-    # The CPU seconds follow each "Parse Time", "Radiosity Time" and "Trace Time" line.
+    # The CPU seconds follow each "Parse Time", "Photon Time", "Radiosity Time" and "Trace
+    # Time" line.
     cpu() { grep -A1 -m1 "$1" "$log" | sed -nE 's/.* ([0-9.]+) CPU-seconds.*/\1/p'; }
     parse=$(cpu 'Parse Time:')
     radiosity=$(cpu 'Radiosity Time:')
-    trace=$(awk -v t="$(cpu 'Trace Time:')" -v r="${radiosity:-0}" 'BEGIN { printf "%.3f", t + r }')
+    photons=$(cpu 'Photon Time:')
+    trace=$(awk -v t="$(cpu 'Trace Time:')" -v r="${radiosity:-0}" -v p="${photons:-0}" \
+        'BEGIN { printf "%.3f", t + r + p }')
     grep -v "^$name " "$times" > "$times.new" || true
     echo "$name $parse $trace" >> "$times.new"
     mv "$times.new" "$times"

@@ -332,3 +332,47 @@ fn scene_errors_are_the_gcc_style_report() {
         plugin errored with: extra: option `Frobnicate=on`: unknown option"#]]
     .assert_eq(&reports.join("\n"));
 }
+
+/// Photons in the plugin: the reflective caustic scene renders through Typst (wasm,
+/// interpreted) to the same pixels as natively on every core. The photon map is
+/// seeded from each photon's place in its spiral, never from timing, so neither the
+/// thread count nor the platform changes it.
+#[test]
+fn photon_caustics_render_the_same_in_typst_and_natively() {
+    let scenes = tests::fidelity::manifest();
+    let mut scene = scenes
+        .iter()
+        .find(|s| s.name == "photons-reflect")
+        .unwrap()
+        .clone();
+    scene.options = ["+W96", "+H72", "-A"].map(String::from).to_vec();
+    let native = scene.render_with(&scene.source()).unwrap();
+    let doc = Document::new(&format!(
+        "{IMPORT}#let r = try-render(read(\"scene.pov\"), width: 96, height: 72, antialias: false)
+#metadata((error: r.error, encoding: r.encoding, pixels: array(r.pixels))) <result>
+"
+    ))
+    .with_file("scene.pov", scene.source());
+    let result = doc.query("<result>").unwrap();
+    assert_eq!(result["error"], Value::Null);
+    assert_eq!(result["encoding"], "rgb8");
+    let typst: Vec<u8> = result["pixels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_u64().unwrap() as u8)
+        .collect();
+    let ours: Vec<u8> = native
+        .pixels
+        .iter()
+        .flat_map(|p| [p[0], p[1], p[2]].map(|c| (c * 255.0).round() as u8))
+        .collect();
+    assert_eq!(typst.len(), ours.len());
+    let differing = typst.iter().zip(&ours).filter(|(a, b)| a != b).count();
+    assert_eq!(
+        differing,
+        0,
+        "{differing} of {} channels differ",
+        ours.len()
+    );
+}

@@ -1085,10 +1085,22 @@ impl Evaluator<'_> {
             let token = self.next()?;
             match token.kind {
                 R_BRACE => return Ok(interior),
-                IOR_KW => interior.ior = self.float()?,
+                IOR_KW => {
+                    interior.ior = self.float()?;
+                    interior.ior_given = true;
+                }
                 CAUSTICS_KW => interior.caustics = self.float()?,
                 DISPERSION_KW => interior.dispersion = self.float()?,
-                DISPERSION_SAMPLES_KW => interior.dispersion_samples = self.int()?.max(2) as u32,
+                DISPERSION_SAMPLES_KW => {
+                    let samples = self.int()?;
+                    if samples > 1000 {
+                        return Err(self.error_at(
+                            &token,
+                            "dispersion_samples traces a ray for each sample: at most 1000",
+                        ));
+                    }
+                    interior.dispersion_samples = samples.max(2) as u32;
+                }
                 FADE_DISTANCE_KW => interior.fade_distance = self.float()?,
                 FADE_POWER_KW => interior.fade_power = self.float()?,
                 FADE_COLOR_KW | FADE_COLOUR_KW => interior.fade_colour = self.scene_colour()?,

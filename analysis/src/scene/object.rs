@@ -126,6 +126,8 @@ pub struct ObjectFlags {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Interior {
     pub ior: f64,
+    /// Whether the scene gave `ior`: POV-Ray disperses light only then.
+    pub ior_given: bool,
     pub caustics: f64,
     pub dispersion: f64,
     pub dispersion_samples: u32,
@@ -140,6 +142,7 @@ impl Default for Interior {
     fn default() -> Self {
         Interior {
             ior: 1.0,
+            ior_given: false,
             caustics: 0.0,
             dispersion: 1.0,
             dispersion_samples: 7,

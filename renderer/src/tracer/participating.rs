@@ -41,10 +41,10 @@ impl<'w> Tracer<'w> {
         }
         let unit = Ray::new(ray.origin, ray.direction / length);
         let depth = depth * length;
-        if self.interiors.iter().any(|i| !i.hollow) {
+        if self.inside.interiors().iter().any(|i| !i.hollow) {
             return sample;
         }
-        let inside = self.interiors.clone();
+        let inside = self.inside.interiors().to_vec();
         let atmosphere = world.atmosphere.clone();
         let mut passage = Passage::CLEAR;
         if depth.is_finite() {
@@ -94,6 +94,8 @@ impl<'w> Tracer<'w> {
             let mut colour = incoming.colour;
             if !light.shadowless && world.quality.shadows {
                 self.shadow_start.extend_from_slice(inside);
+                // As at surfaces, refracting photon targets stop the light (in `shadowed`);
+                // without photons in media nothing brings it back there, as in POV-Ray.
                 colour = self.shadowed(light, p, incoming.direction, incoming.distance, colour);
                 self.shadow_start.clear();
             } else if self

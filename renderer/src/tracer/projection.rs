@@ -20,7 +20,10 @@ impl Tracer<'_> {
         colour: DVec3,
     ) -> DVec3 {
         match self.projected_reach(light, p, direction, distance) {
-            Some(reach) => self.filtered(p, direction, reach, colour),
+            Some(reach) => {
+                let stop = self.photons_stop(light);
+                self.filtered(p, direction, reach, colour, stop)
+            }
             None => DVec3::ZERO,
         }
     }

@@ -1,0 +1,343 @@
+//! Photon mapping (POV-Ray 3.7's `photons`): caustics drawn by light that reflective and
+//! refractive targets send on. Before tracing, lights shoot photons at the targets'
+//! bounds (`shoot`); the photons that land on collecting surfaces after a reflection or
+//! refraction go into a kd-tree (`kdtree`); while tracing, each collecting surface point
+//! gathers its nearest photons (`gather`) and takes them as light arriving from the way
+//! they came, through the same lighting model as a light source.
+//!
+//! Direct light through a refracting target is left to the photons: shadow rays towards a
+//! light that shoots refraction photons stop at such targets, as in POV-Ray, so that the
+//! light beyond them is the caustic and not the caustic on top of the straight light.
+//!
+//! The pass runs only for scenes with a `photons` block in `global_settings`, at quality 6
+//! and above, and only when some light shoots at some target.
+
+mod gather;
+mod kdtree;
+mod shoot;
+
+use crate::bounds::Aabb;
+use crate::build::BuildError;
+use crate::object::Object;
+use crate::tracer::World;
+use analysis::scene::{self, ObjectPhotons, PhotonDensity, Photons};
+pub use gather::GatherScratch;
+use gather::{Estimate, Gather};
+use glam::{DVec3, Vec3};
+use kdtree::KdTree;
+use shoot::Shooting;
+
+/// What a surface does with photons, from its object's photons block: one bit each, so
+/// that a leaf stays small in scenes of a hundred thousand objects.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SurfacePhotons(u8);
+
+const TARGET: u8 = 1;
+const REFRACTION: u8 = 2;
+const REFLECTION: u8 = 4;
+const COLLECT: u8 = 8;
+const PASS_THROUGH: u8 = 16;
+
+impl Default for SurfacePhotons {
+    fn default() -> Self {
+        SurfacePhotons::from_scene(&ObjectPhotons::default(), false)
+    }
+}
+
+impl SurfacePhotons {
+    /// `no_shadow` objects let photons pass unless their block says otherwise.
+    pub fn from_scene(photons: &ObjectPhotons, no_shadow: bool) -> SurfacePhotons {
+        let bit = |on: bool, bit: u8| if on { bit } else { 0 };
+        SurfacePhotons(
+            bit(photons.target.is_some(), TARGET)
+                | bit(photons.refraction, REFRACTION)
+                | bit(photons.reflection, REFLECTION)
+                | bit(photons.collect, COLLECT)
+                | bit(photons.pass_through.unwrap_or(no_shadow), PASS_THROUGH),
+        )
+    }
+
+    /// Photons are aimed at the object.
+    pub fn target(self) -> bool {
+        self.0 & TARGET != 0
+    }
+
+    /// Photons go on through the surface.
+    pub fn refraction(self) -> bool {
+        self.0 & REFRACTION != 0
+    }
+
+    /// Photons go on off the surface.
+    pub fn reflection(self) -> bool {
+        self.0 & REFLECTION != 0
+    }
+
+    /// Photons that arrive after a reflection or refraction stay and light the surface.
+    pub fn collect(self) -> bool {
+        self.0 & COLLECT != 0
+    }
+
+    /// Photons on their way to a target pass through untouched.
+    pub fn pass_through(self) -> bool {
+        self.0 & PASS_THROUGH != 0
+    }
+
+    /// Whether this surface stops direct light from a light that shoots refraction
+    /// photons: the photons bring that light instead.
+    pub fn stops_light_for_photons(self) -> bool {
+        self.target() && self.refraction()
+    }
+}
+
+/// A bounding box photons are aimed at, with its spacing multiplier.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Target {
+    pub bounds: Aabb,
+    pub spacing_multiplier: f64,
+}
+
+/// Adds the targets of a top-level scene object, built as `built`: the object, or the
+/// parts of a union with `split_union` on.
+pub fn add_targets(
+    object: &scene::Object,
+    built: &Object,
+    targets: &mut Vec<Target>,
+) -> Result<(), BuildError> {
+    let Some(multiplier) = object.photons.target else {
+        return Ok(());
+    };
+    let split = matches!(
+        (&object.shape, built),
+        (scene::Shape::Csg { op: scene::CsgOp::Union, .. }, Object::Csg(csg))
+            if object.photons.split_union && csg.kind == crate::object::CsgKind::Union
+    );
+    let parts: Vec<Aabb> = match built {
+        Object::Csg(csg) if split => csg.children.iter().map(Object::bounds).collect(),
+        _ => vec![built.bounds()],
+    };
+    for bounds in parts {
+        if bounds.is_empty() {
+            continue;
+        }
+        if !bounds.is_finite() {
+            return Err(BuildError {
+                message: "not supported yet: photons aimed at an unbounded object".into(),
+                origin: object.origin.clone(),
+            });
+        }
+        targets.push(Target {
+            bounds,
+            spacing_multiplier: multiplier,
+        });
+    }
+    Ok(())
+}
+
+/// The most photons one render may shoot or store: enough for any caustic a picture
+/// shows, and a clear error instead of exhausted memory for a spacing far too small.
+const MAX_PHOTONS: u64 = 20_000_000;
+
+/// The limit on photons, with where the scene set their density.
+#[derive(Debug, Clone)]
+pub struct PhotonBudget {
+    max: u64,
+}
+
+impl PhotonBudget {
+    fn check(&self, photons: u64) -> Result<(), String> {
+        if photons > self.max {
+            return Err(format!(
+                "these photon settings shoot or store more than {} photons; raise the spacing or lower the count",
+                self.max
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The stored photons and how to gather them.
+#[derive(Debug, Clone)]
+pub struct PhotonMap {
+    tree: KdTree,
+    gather: Gather,
+}
+
+impl PhotonMap {
+    /// Shoots the scene's photons into `world`'s targets; `None` when no photon lands.
+    pub fn shoot(
+        world: &World,
+        settings: &Photons,
+        targets: &[Target],
+    ) -> Result<Option<PhotonMap>, BuildError> {
+        let fail = |message| BuildError {
+            message,
+            origin: settings.origin.clone(),
+        };
+        let shoots = world
+            .lights
+            .iter()
+            .any(|l| l.photons.refraction || l.photons.reflection);
+        if targets.is_empty() || !shoots {
+            return Ok(None);
+        }
+        let mut shooting = Shooting {
+            spacing: 1.0,
+            jitter: settings.jitter,
+            autostop: settings.autostop,
+            max_trace_level: settings.max_trace_level.unwrap_or(world.max_trace_level),
+            adc_bailout: settings.adc_bailout.unwrap_or(world.adc_bailout),
+        };
+        shooting.spacing = match settings.density {
+            PhotonDensity::Spacing(spacing) => spacing,
+            PhotonDensity::Count(count) => spacing_for(world, targets, &mut shooting, count),
+        };
+        let budget = PhotonBudget { max: MAX_PHOTONS };
+        let mut stored = Vec::new();
+        shoot::shoot_all(world, targets, &shooting, &budget, &mut stored).map_err(fail)?;
+        if stored.is_empty() {
+            return Ok(None);
+        }
+        let gather = Gather::new(settings, shooting.spacing, stored.len());
+        Ok(Some(PhotonMap {
+            tree: KdTree::build(stored),
+            gather,
+        }))
+    }
+
+    /// The photons lighting the point `p` of a surface whose normal `normal` faces the
+    /// viewer, as at most two lights, one on each side of the surface: `(colour,
+    /// direction towards where the photons came from)`. Each light is its photons' total
+    /// power from their power-weighted mean direction, with the colour that gives a flat
+    /// surface their density estimate once the lighting model's cosine has been applied:
+    /// the photons' power spread over the gathered disc as it spread over the surface.
+    /// That is exact for diffuse light on flat surfaces and costs one lighting evaluation
+    /// instead of one per photon; the photons of a caustic arrive from nearly one
+    /// direction, so highlights and bumps see little difference.
+    pub fn lights_at(
+        &self,
+        p: DVec3,
+        normal: DVec3,
+        scratch: &mut GatherScratch,
+        lights: &mut Vec<(DVec3, DVec3)>,
+    ) {
+        lights.clear();
+        let Some(Estimate { area_radius2 }) = self.gather.gather(&self.tree, p.as_vec3(), scratch)
+        else {
+            return;
+        };
+        let normal = normal.as_vec3();
+        // Power and power-weighted direction from the front and from behind.
+        let mut sides = [(Vec3::ZERO, Vec3::ZERO); 2];
+        for &(_, index) in &scratch.found {
+            let photon = self.tree.photon(index);
+            let from = -photon.direction;
+            let side = &mut sides[usize::from(from.dot(normal) < 0.0)];
+            side.0 += photon.power;
+            side.1 += from * photon.power.element_sum();
+        }
+        let area = std::f64::consts::PI * f64::from(area_radius2);
+        for (power, direction) in sides {
+            let Some(direction) = direction.try_normalize() else {
+                continue;
+            };
+            let cos = f64::from(direction.dot(normal).abs()).max(0.1);
+            lights.push((power.as_dvec3() / (area * cos), direction.as_dvec3()));
+        }
+    }
+}
+
+/// The spacing at which the spirals shoot about `count` photons, found from a trial at a
+/// coarse spacing: the number shot goes as the inverse square of the spacing, autostop
+/// and all.
+fn spacing_for(world: &World, targets: &[Target], shooting: &mut Shooting, count: u32) -> f64 {
+    // A trial of about two thousand photons per target.
+    let trial = targets
+        .iter()
+        .map(|t| (t.bounds.max - t.bounds.min).length() * t.spacing_multiplier)
+        .fold(0.0, f64::max)
+        / 50.0;
+    shooting.spacing = trial;
+    let shot = shoot::count_shots(world, targets, shooting).max(1);
+    trial * (shot as f64 / f64::from(count)).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::build::{BuildError, BuildSettings, build_world};
+    use crate::tracer::World;
+    use analysis::{EvalOptions, MemoryFiles, evaluate};
+
+    fn build(text: &str, quality: u8) -> Result<World, BuildError> {
+        let files = MemoryFiles::new().with("scene.pov", format!("#version 3.7;\n{text}"));
+        let scene = evaluate("scene.pov", &files, &EvalOptions::default())
+            .scene
+            .expect("the scene evaluates");
+        let settings = BuildSettings {
+            quality,
+            output_alpha: false,
+            max_trace_level: None,
+        };
+        build_world(&scene, settings)
+    }
+
+    /// A glass sphere over a floor, lit from above; `global` goes in `global_settings`.
+    fn lens(global: &str, sphere: &str) -> String {
+        format!(
+            "global_settings {{ {global} }}
+             light_source {{ <0, 10, 0> rgb 1 }}
+             plane {{ y, -1 pigment {{ rgb 1 }} }}
+             sphere {{ 0, 0.5 pigment {{ rgbf 1 }} interior {{ ior 1.5 }} {sphere} }}"
+        )
+    }
+
+    #[test]
+    fn no_photon_pass_without_photons_or_targets_or_at_low_quality() {
+        let target = "photons { target refraction on }";
+        let world = build(&lens("", target), 9).unwrap();
+        assert!(world.photons.is_none());
+        let world = build(&lens("photons { spacing 0.05 }", ""), 9).unwrap();
+        assert!(world.photons.is_none());
+        let world = build(&lens("photons { spacing 0.05 }", target), 5).unwrap();
+        assert!(world.photons.is_none());
+        let world = build(&lens("photons { spacing 0.05 }", target), 9).unwrap();
+        assert!(world.photons.is_some());
+    }
+
+    #[test]
+    fn the_map_is_the_same_on_every_build() {
+        let scene = lens(
+            "photons { spacing 0.05 jitter 1 }",
+            "photons { target refraction on }",
+        );
+        let a = build(&scene, 9).unwrap().photons.unwrap();
+        let b = build(&scene, 9).unwrap().photons.unwrap();
+        assert_eq!(format!("{:?}", a.tree), format!("{:?}", b.tree));
+    }
+
+    #[test]
+    fn what_is_not_drawn_is_a_located_error() {
+        let plane = "global_settings { photons { spacing 0.1 } }
+            light_source { <0, 10, 0> rgb 1 }
+            plane { y, 0 pigment { rgb 1 } finish { reflection 1 } photons { target } }";
+        let e = build(plane, 9).unwrap_err();
+        assert_eq!(
+            e.message,
+            "not supported yet: photons aimed at an unbounded object"
+        );
+        assert!(e.origin.is_some());
+        let groups = "global_settings { photons { spacing 0.1 } }
+            light_group { light_source { <0, 10, 0> rgb 1 } sphere { 0, 1 } }";
+        let e = build(groups, 9).unwrap_err();
+        assert_eq!(
+            e.message,
+            "not supported yet: light groups in a scene with photons"
+        );
+        let tiny = lens("photons { spacing 0.00001 }", "photons { target }");
+        let e = build(&tiny, 9).unwrap_err();
+        assert!(
+            e.message.contains("more than 20000000 photons"),
+            "{}",
+            e.message
+        );
+    }
+}
