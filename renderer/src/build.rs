@@ -730,6 +730,22 @@ fn axis_frame(base: DVec3, cap: DVec3, radius: f64) -> Option<DAffine3> {
     ))
 }
 
+/// The world of a `#version 3.7` scene written in SDL, at quality 9, for tests.
+#[cfg(test)]
+pub(crate) fn world_of_source(text: &str) -> World {
+    use analysis::{EvalOptions, MemoryFiles, evaluate};
+    let files = MemoryFiles::new().with("scene.pov", format!("#version 3.7;\n{text}"));
+    let scene = evaluate("scene.pov", &files, &EvalOptions::default())
+        .scene
+        .expect("the scene evaluates");
+    let settings = BuildSettings {
+        quality: 9,
+        output_alpha: false,
+        max_trace_level: None,
+    };
+    build_world(&scene, settings).expect("the world builds")
+}
+
 #[cfg(test)]
 mod tests {
     use crate::RenderOptions;

@@ -412,14 +412,29 @@ impl Object {
                 }
                 best
             }
-            Object::Csg(_) => {
-                let start = scratch.len();
-                self.all_hits(q, scratch);
-                let best = scratch[start..]
-                    .iter()
-                    .copied()
-                    .min_by(|a, b| a.t.total_cmp(&b.t));
-                scratch.truncate(start);
+            Object::Csg(csg) => {
+                // Each child's crossings are tested nearest first and only up to the
+                // nearest kept so far: testing whether a crossing is kept (inside the
+                // other children or not) costs more than finding it.
+                let mut q = *q;
+                let mut best = None;
+                for (i, child) in csg.children.iter().enumerate() {
+                    if !csg.may_keep(i) {
+                        break;
+                    }
+                    let start = scratch.len();
+                    child.all_hits(&q, scratch);
+                    scratch[start..].sort_by(|a, b| a.t.total_cmp(&b.t));
+                    let kept = scratch[start..]
+                        .iter()
+                        .find(|hit| csg.keeps(i, q.ray.at(hit.t)))
+                        .copied();
+                    scratch.truncate(start);
+                    if let Some(hit) = kept {
+                        q.tmax = hit.t;
+                        best = Some(hit);
+                    }
+                }
                 best
             }
         }
@@ -448,6 +463,9 @@ impl Object {
             }
             Object::Csg(csg) => {
                 for (i, child) in csg.children.iter().enumerate() {
+                    if !csg.may_keep(i) {
+                        break;
+                    }
                     let start = out.len();
                     child.all_hits(q, out);
                     if csg.kind == CsgKind::Union {
@@ -469,6 +487,12 @@ impl Object {
 }
 
 impl Csg {
+    /// Whether crossings of child `from` and those after it can be on this CSG's surface:
+    /// not those of the objects that clip another.
+    fn may_keep(&self, from: usize) -> bool {
+        self.kind != CsgKind::Clip || from == 0
+    }
+
     /// Whether a crossing of child `from` at `p` is on this CSG's surface.
     fn keeps(&self, from: usize, p: DVec3) -> bool {
         let others = self.children.iter().enumerate().filter(|(j, _)| *j != from);

@@ -134,6 +134,10 @@ pub struct Tracer<'w> {
     shadow_start: Vec<&'w Interior>,
     /// Where the current ray stands in the radiosity computation; `None` without it.
     pub(crate) radiosity: Option<crate::radiosity::Walk<'w>>,
+    /// Each texture layer's reflectivity, normal and reflection exponent, kept from its
+    /// lighting until its reflected ray is traced: a stack, since those rays shade further
+    /// surfaces above the entries of the surface that sent them.
+    reflections: Vec<(DVec3, DVec3, f64)>,
 }
 
 impl<'w> Tracer<'w> {
@@ -152,6 +156,7 @@ impl<'w> Tracer<'w> {
                 .radiosity
                 .as_ref()
                 .map(crate::radiosity::Walk::rendering),
+            reflections: Vec::new(),
         }
     }
 
@@ -236,8 +241,7 @@ impl<'w> Tracer<'w> {
         let mut filter = DVec3::ONE;
         let mut trans = 1.0;
         let mut top_normal = raw_normal;
-        // Each layer's reflectivity, normal and exponent, for after the loop.
-        let mut reflections: Vec<(DVec3, DVec3, f64)> = Vec::new();
+        let reflections = self.reflections.len();
         let mut photon_lights = std::mem::take(&mut self.photon_lights);
         photon_lights.clear();
         if let Some(photons) = &world.photons
@@ -268,7 +272,7 @@ impl<'w> Tracer<'w> {
             let cos_incidence = -ray.direction.dot(normal);
             let reflectivity = reflectivity(finish, pigment.rgb, cos_incidence, relative_ior);
             let exponent = finish.reflection.as_ref().map_or(1.0, |r| r.exponent);
-            reflections.push((reflectivity, normal, exponent));
+            self.reflections.push((reflectivity, normal, exponent));
 
             let ambient = self.ambient(finish, pigment.rgb, normal, opacity, &mut indirect);
             let mut own = pigment.rgb * (ambient + finish.emission) * opacity;
@@ -321,7 +325,8 @@ impl<'w> Tracer<'w> {
         }
 
         if world.quality.secondary_rays {
-            for (reflectivity, normal, exponent) in reflections {
+            for index in reflections..self.reflections.len() {
+                let (reflectivity, normal, exponent) = self.reflections[index];
                 // Total internal reflection has already reflected along the top normal.
                 let same_as_top = (normal - top_normal).abs().max_element() <= 1e-10;
                 if reflectivity == DVec3::ZERO || (total_reflection && same_as_top) {
@@ -340,6 +345,7 @@ impl<'w> Tracer<'w> {
                 colour += reflectivity * reflected;
             }
         }
+        self.reflections.truncate(reflections);
         Sample::new(colour, transmit)
     }
 
@@ -566,7 +572,7 @@ impl<'w> Tracer<'w> {
                 eps,
                 remaining - eps,
             );
-            let Some(hit) = self.world.bvh.nearest(&q, &mut self.scratch) else {
+            let Some(hit) = self.world.bvh.occluder(&q, &mut self.scratch) else {
                 let end = origin + direction * remaining;
                 for interior in &inside {
                     colour *= participating::media_transmittance(interior, origin, end);

@@ -67,12 +67,33 @@ impl Bvh {
 
     /// The nearest crossing of any object inside the query's interval.
     pub fn nearest<'a>(&'a self, q: &Query, scratch: &mut Vec<Hit<'a>>) -> Option<Hit<'a>> {
+        self.search(q, scratch, false)
+    }
+
+    /// What a shadow ray meets inside the query's interval: a crossing of an opaque leaf
+    /// when there is one (the first found, not necessarily the nearest: it blocks the light
+    /// wherever it lies), otherwise the nearest crossing, which filters the light.
+    pub fn occluder<'a>(&'a self, q: &Query, scratch: &mut Vec<Hit<'a>>) -> Option<Hit<'a>> {
+        self.search(q, scratch, true)
+    }
+
+    /// The nearest crossing inside the query's interval or, with `opaque_ends`, the first
+    /// crossing of an opaque leaf found. Such a search cannot narrow the interval to the
+    /// nearest transparent crossing, since an opaque one may lie beyond it.
+    #[inline]
+    fn search<'a>(
+        &'a self,
+        q: &Query,
+        scratch: &mut Vec<Hit<'a>>,
+        opaque_ends: bool,
+    ) -> Option<Hit<'a>> {
         let mut q = *q;
         let mut best = None;
         for object in &self.unbounded {
-            if let Some(hit) = object.nearest(&q, scratch) {
-                q.tmax = hit.t;
-                best = Some(hit);
+            if let Some(hit) = object.nearest(&q, scratch)
+                && take(&mut best, hit, &mut q, opaque_ends)
+            {
+                return best;
             }
         }
         let ray = q.ray;
@@ -80,13 +101,67 @@ impl Bvh {
             .traverse(&ray, q.inv_dir, q.tmin, q.tmax, |range, tmax| {
                 q.tmax = tmax;
                 for object in &self.objects[range] {
-                    if let Some(hit) = object.nearest(&q, scratch) {
-                        q.tmax = hit.t;
-                        best = Some(hit);
+                    if let Some(hit) = object.nearest(&q, scratch)
+                        && take(&mut best, hit, &mut q, opaque_ends)
+                    {
+                        return f64::NEG_INFINITY;
                     }
                 }
                 q.tmax
             });
         best
+    }
+}
+
+/// Keeps `hit` in `best` if it is nearer, narrowing the query to it unless `opaque_ends`;
+/// `true` when the search ends with it.
+#[inline]
+fn take<'a>(best: &mut Option<Hit<'a>>, hit: Hit<'a>, q: &mut Query, opaque_ends: bool) -> bool {
+    if opaque_ends && !hit.leaf.transmits {
+        *best = Some(hit);
+        return true;
+    }
+    if best.is_none_or(|b| hit.t < b.t) {
+        *best = Some(hit);
+        if !opaque_ends {
+            q.tmax = hit.t;
+        }
+    }
+    false
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::build::world_of_source as world;
+    use crate::object::Query;
+    use crate::ray::{Ray, RayKind};
+    use crate::tracer::World;
+    use glam::DVec3;
+
+    /// Where along +z from z = -10 the search ends, and whether what it met is opaque.
+    fn along_z(world: &World, occluder: bool) -> Option<(f64, bool)> {
+        let ray = Ray::new(DVec3::new(0.0, 0.0, -10.0), DVec3::Z);
+        let q = Query::new(ray, RayKind::Shadow, 1e-9, f64::INFINITY);
+        let mut scratch = Vec::new();
+        let hit = if occluder {
+            world.bvh.occluder(&q, &mut scratch)
+        } else {
+            world.bvh.nearest(&q, &mut scratch)
+        };
+        hit.map(|h| (h.t, !h.leaf.transmits))
+    }
+
+    #[test]
+    fn the_occluder_is_an_opaque_crossing_before_a_nearer_transparent_one() {
+        let glass = "sphere { <0, 0, -4>, 1 pigment { rgbf 0.9 } }";
+        let wall = "box { <-1, -1, 2>, <1, 1, 3> pigment { rgb 1 } }";
+        let both = world(&format!("{glass}\n{wall}"));
+        assert_eq!(along_z(&both, false), Some((5.0, false)));
+        assert_eq!(along_z(&both, true), Some((12.0, true)));
+        // Without an opaque object the occluder is the nearest crossing, and without
+        // anything on the way there is none.
+        let glass_only = world(glass);
+        assert_eq!(along_z(&glass_only, true), Some((5.0, false)));
+        assert_eq!(along_z(&world("sphere { <5, 0, 0>, 1 }"), true), None);
     }
 }

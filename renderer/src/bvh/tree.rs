@@ -90,7 +90,8 @@ impl Tree {
     /// Calls `visit` with the items of every leaf whose box the ray crosses within
     /// `[tmin, tmax]`, the nearer child of each node first. `visit` returns the interval's
     /// new end (the nearest hit so far, for a nearest-hit search), which culls the leaves
-    /// beyond it.
+    /// beyond it; an end before `tmin` stops the traversal (a search that found what it
+    /// wanted).
     pub fn traverse(
         &self,
         ray: &Ray,
@@ -118,6 +119,9 @@ impl Tree {
             if node.count > 0 {
                 let start = node.index as usize;
                 tmax = visit(start..start + node.count as usize, tmax);
+                if tmax < tmin {
+                    return;
+                }
             } else {
                 let first = stack[top] + 1;
                 let second = node.index;
@@ -409,5 +413,20 @@ mod tests {
             },
         );
         assert_eq!(visited, vec![0]);
+    }
+
+    #[test]
+    fn an_end_before_the_start_stops_the_traversal() {
+        let boxes: Vec<Aabb> = (0..100)
+            .map(|i| unit_box(DVec3::new(0.0, 0.0, 2.0 * i as f64)))
+            .collect();
+        let (tree, _) = Tree::build(&boxes, 1);
+        let ray = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
+        let mut leaves = 0;
+        tree.traverse(&ray, ray.direction.recip(), 0.0, f64::INFINITY, |_, _| {
+            leaves += 1;
+            f64::NEG_INFINITY
+        });
+        assert_eq!(leaves, 1);
     }
 }

@@ -142,24 +142,11 @@ pub(super) fn media_transmittance(interior: &Interior, a: DVec3, b: DVec3) -> DV
 
 #[cfg(test)]
 mod tests {
-    use crate::build::{BuildSettings, build_world};
+    use crate::build::world_of_source as world;
     use crate::camera::Camera;
     use crate::tracer::{Tracer, World};
     use analysis::{EvalOptions, MemoryFiles, evaluate};
     use glam::DVec3;
-
-    fn world(text: &str) -> World {
-        let files = MemoryFiles::new().with("scene.pov", format!("#version 3.7;\n{text}"));
-        let scene = evaluate("scene.pov", &files, &EvalOptions::default())
-            .scene
-            .expect("the scene evaluates");
-        let settings = BuildSettings {
-            quality: 9,
-            output_alpha: false,
-            max_trace_level: None,
-        };
-        build_world(&scene, settings).expect("the world builds")
-    }
 
     /// The colour of the centre pixel of a 40 × 30 image.
     fn centre(world: &World, text: &str) -> DVec3 {
