@@ -3,8 +3,9 @@
 //! exact: min over s of |p - c(s)| - r(s). Each curve segment is cut into pieces short
 //! enough to be enclosed in a capsule around their chord (the Bézier control polygon
 //! bounds the deviation), a hierarchy of boxes finds the capsules a ray crosses, and
-//! sphere tracing on the piece's true distance, then Newton's method, finds the surface
-//! to machine precision, so that normals are smooth and silhouettes exact.
+//! sphere tracing on the piece's true distance, with Newton steps along the ray where
+//! they are longer and safe, then Newton's method finds the surface to machine
+//! precision, so that normals are smooth and silhouettes exact.
 
 use super::Roots;
 use crate::bounds::Aabb;
@@ -138,6 +139,18 @@ pub struct SphereSweep {
     tolerance: f64,
 }
 
+/// What a Newton step along the ray found.
+enum NewtonStep {
+    /// The crossing.
+    Hit(f64),
+    /// A point still outside and still approaching: its t, distance and nearest s.
+    Closer(f64, f64, f64),
+    /// The ray passed its nearest approach to the piece within the step.
+    Passed,
+    /// No step longer than the safe one.
+    Short,
+}
+
 /// A candidate capsule along a ray.
 #[derive(Debug, Clone, Copy)]
 struct Candidate {
@@ -254,15 +267,20 @@ impl SphereSweep {
                     hi = s;
                 }
                 let newton = s - e / de;
-                let next = if de > 0.0 && newton > lo && newton < hi {
-                    newton
+                if de > 0.0 && newton >= lo && newton <= hi {
+                    // Newton's method converges quadratically, and the distance is
+                    // stationary here: once a step is this short, the next could not
+                    // change the distance by a bit.
+                    let step = (newton - s).abs();
+                    s = newton;
+                    if step <= 1e-10 * (piece.s1 - piece.s0) {
+                        break;
+                    }
                 } else {
-                    0.5 * (lo + hi)
-                };
-                let moved = (next - s).abs();
-                s = next;
-                if moved <= 1e-13 * (piece.s1 - piece.s0) {
-                    break;
+                    s = 0.5 * (lo + hi);
+                    if hi - lo <= 1e-13 * (piece.s1 - piece.s0) {
+                        break;
+                    }
                 }
             }
             s
@@ -284,8 +302,10 @@ impl SphereSweep {
         let (start, sign) = if entering { (t0, 1.0) } else { (t1, -1.0) };
         let mut t = start;
         let mut guess = 0.5 * (piece.s0 + piece.s1);
+        let (mut d, mut s) = self.piece_distance(piece, ray.at(t), guess);
+        // Newton steps are tried until one passes the ray's nearest approach.
+        let mut newton = true;
         for _ in 0..MAX_STEPS {
-            let (d, s) = self.piece_distance(piece, ray.at(t), guess);
             guess = s;
             if d <= self.tolerance {
                 if d < -self.tolerance && t == start {
@@ -298,12 +318,24 @@ impl SphereSweep {
             // radius need not be the nearest: stepping by d could pass the surface. With
             // |p - c|² - r² = d (d + 2r) and the nearest sphere's |p - c| + r at most
             // d + 2·reach, this step stays short of it.
-            let r = self.segments[piece.segment as usize].radius(s);
-            let safe = d * (d + 2.0 * r) / (d + 2.0 * piece.reach);
-            t += sign * safe / speed;
+            let segment = &self.segments[piece.segment as usize];
+            let safe = d * (d + 2.0 * segment.radius(s)) / (d + 2.0 * piece.reach) / speed;
+            if newton {
+                match self.newton_step(piece, ray, t, d, s, sign, safe, (t0, t1)) {
+                    NewtonStep::Hit(hit) => return Some(hit),
+                    NewtonStep::Closer(nt, nd, ns) => {
+                        (t, d, s) = (nt, nd, ns);
+                        continue;
+                    }
+                    NewtonStep::Passed => newton = false,
+                    NewtonStep::Short => {}
+                }
+            }
+            t += sign * safe;
             if t > t1 || t < t0 {
                 return None;
             }
+            (d, s) = self.piece_distance(piece, ray.at(t), guess);
         }
         // Sphere tracing crawls beside a grazing ray, in ever shorter steps, and how far it
         // gets would depend on the tolerance. The rest of the span is scanned for a point
@@ -332,6 +364,93 @@ impl SphereSweep {
             outside = probe;
         }
         None
+    }
+
+    /// Sphere tracing creeps towards a surface the ray meets at a slant, each step
+    /// shortening by the cosine of the angle. A Newton step on the distance along the ray
+    /// gets there at once where the tube is convex; it is taken when it is longer than
+    /// the safe step and stays in the capsule. Landing inside brackets the crossing with
+    /// the last point outside; landing outside but moving away means the ray passed its
+    /// nearest approach, and the search falls back to safe steps.
+    #[allow(clippy::too_many_arguments)]
+    fn newton_step(
+        &self,
+        piece: &Piece,
+        ray: &Ray,
+        t: f64,
+        d: f64,
+        s: f64,
+        sign: f64,
+        safe: f64,
+        (t0, t1): (f64, f64),
+    ) -> NewtonStep {
+        let segment = &self.segments[piece.segment as usize];
+        let approach = |p: DVec3, s: f64| {
+            sign * (p - segment.centre(s))
+                .normalize_or_zero()
+                .dot(ray.direction)
+        };
+        let slope = approach(ray.at(t), s);
+        if slope >= 0.0 || d / -slope <= safe {
+            return NewtonStep::Short;
+        }
+        let next = t + sign * d / -slope;
+        if next > t1 || next < t0 {
+            return NewtonStep::Short;
+        }
+        let p = ray.at(next);
+        let (nd, ns) = self.piece_distance(piece, p, s);
+        if nd < -self.tolerance {
+            return NewtonStep::Hit(self.bracketed(piece, ray, (t, d), (next, nd), ns));
+        }
+        if nd <= self.tolerance {
+            return NewtonStep::Hit(self.polish(piece, ray, next, ns));
+        }
+        if approach(p, ns) < 0.0 {
+            NewtonStep::Closer(next, nd, ns)
+        } else {
+            NewtonStep::Passed
+        }
+    }
+
+    /// The crossing between a point outside and one inside, by regula falsi with the
+    /// Illinois correction, then polished.
+    fn bracketed(
+        &self,
+        piece: &Piece,
+        ray: &Ray,
+        outside: (f64, f64),
+        inside: (f64, f64),
+        s: f64,
+    ) -> f64 {
+        let ((mut ta, mut da), (mut tb, mut db)) = (outside, inside);
+        let mut s = s;
+        let mut side = 0;
+        for _ in 0..64 {
+            let t = (ta * db - tb * da) / (db - da);
+            if !(t > ta.min(tb) && t < ta.max(tb)) {
+                break;
+            }
+            let (d, ns) = self.piece_distance(piece, ray.at(t), s);
+            s = ns;
+            if d.abs() <= self.tolerance {
+                return self.polish(piece, ray, t, s);
+            }
+            if d > 0.0 {
+                (ta, da) = (t, d);
+                if side == 1 {
+                    db *= 0.5;
+                }
+                side = 1;
+            } else {
+                (tb, db) = (t, d);
+                if side == -1 {
+                    da *= 0.5;
+                }
+                side = -1;
+            }
+        }
+        self.polish(piece, ray, ta, s)
     }
 
     /// Newton's method on the distance along the ray, from a point near the surface.
