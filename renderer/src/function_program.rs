@@ -13,9 +13,6 @@ use std::sync::Arc;
 /// The most instructions inlining may produce; past it calls stay calls.
 const MAX_INLINED: usize = 20_000;
 
-/// Registers available on the stack during evaluation; larger programs use the heap.
-const STACK_REGISTERS: usize = 32;
-
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 enum Binary {
     Add,
@@ -141,6 +138,11 @@ enum Node {
     Neg(u32),
     Unary(Unary, u32),
     Binary(Binary, u32, u32),
+    /// A binary operation with a constant operand: `a op k`, or `k op a` when `swapped`.
+    WithConstant(Binary, u32, f64, bool),
+    /// a·b + c, and a·b - c: a product used once, fused into the sum that uses it.
+    MulAdd(u32, u32, u32),
+    MulSub(u32, u32, u32),
     Select3(u32, u32, u32),
     Select4(u32, u32, u32, u32),
     Min(Vec<u32>),
@@ -174,30 +176,52 @@ enum Key {
     Internal(u16, Vec<u32>),
 }
 
-/// An instruction over registers.
+/// An instruction over registers. The operations scenes use most are instructions of
+/// their own, so that an interpreter running the interpreter (the plugin in wasmi)
+/// dispatches once per operation; rare ones with lists of operands live in a side table.
 #[derive(Debug, Clone, PartialEq)]
 enum Inst {
-    Const(u16, f64),
-    Param(u16, u8),
-    Neg(u16, u16),
-    Unary(u16, Unary, u16),
+    Const(u8, f64),
+    Neg(u8, u8),
+    Abs(u8, u8),
+    Sqrt(u8, u8),
+    Unary(u8, Unary, u8),
     /// Both of one argument: sine to the first register, cosine to the second.
-    SinCos(u16, u16, u16),
-    Binary(u16, Binary, u16, u16),
-    Select3(u16, [u16; 3]),
-    Select4(u16, [u16; 4]),
-    Min(u16, Box<[u16]>),
-    Max(u16, Box<[u16]>),
-    Call(u16, Arc<Function>, Box<[u16]>),
-    CallPart(u16, Arc<Function>, Box<[u16]>, u8),
-    Internal(u16, Internal, Box<[u16]>),
+    SinCos(u8, u8, u8),
+    Add(u8, u8, u8),
+    Sub(u8, u8, u8),
+    Mul(u8, u8, u8),
+    Div(u8, u8, u8),
+    /// o = a·b + c and o = a·b - c.
+    MulAdd(u8, [u8; 3]),
+    MulSub(u8, [u8; 3]),
+    /// o = a + k, a·k, k - a, a / k and k / a.
+    AddK(u8, u8, f64),
+    MulK(u8, u8, f64),
+    KSub(u8, u8, f64),
+    DivK(u8, u8, f64),
+    KDiv(u8, u8, f64),
+    Binary(u8, Binary, u8, u8),
+    Select3(u8, [u8; 3]),
+    Select4(u8, [u8; 4]),
+    /// One of the rare instructions, by its index in the side table.
+    Rare(u8, u16),
+}
+
+/// Instructions with lists of operands or nested code.
+#[derive(Debug, Clone, PartialEq)]
+enum Rare {
+    Min(Box<[u8]>),
+    Max(Box<[u8]>),
+    Call(Arc<Function>, Box<[u8]>),
+    CallPart(Arc<Function>, Box<[u8]>, u8),
+    Internal(Internal, Box<[u8]>),
     Sum {
-        out: u16,
         body: Arc<Program>,
-        from: u16,
-        to: u16,
+        from: u8,
+        to: u8,
         product: bool,
-        params: Box<[u16]>,
+        params: Box<[u8]>,
     },
 }
 
@@ -205,8 +229,11 @@ enum Inst {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Program {
     code: Vec<Inst>,
+    rare: Vec<Rare>,
+    /// Registers 0..params hold the parameters.
+    params: usize,
     registers: usize,
-    result: u16,
+    result: u8,
 }
 
 /// Builds value-numbered nodes from stack code.
@@ -236,7 +263,12 @@ impl Builder {
             Node::Min(v) => Some(Key::Min(v.clone())),
             Node::Max(v) => Some(Key::Max(v.clone())),
             Node::Internal(i, v) => Some(Key::Internal(i.0, v.clone())),
-            Node::Call(..) | Node::CallPart(..) | Node::Sum { .. } => None,
+            Node::Call(..)
+            | Node::CallPart(..)
+            | Node::Sum { .. }
+            | Node::WithConstant(..)
+            | Node::MulAdd(..)
+            | Node::MulSub(..) => None,
         };
         if let Some(key) = &key
             && let Some(&index) = self.known.get(key)
@@ -383,41 +415,19 @@ impl Program {
             .map(|i| builder.push(Node::Param(i as u8)))
             .collect();
         let result = builder.code(code, &args)?;
-        Some(Program::from_nodes(builder.nodes, result))
+        Program::from_nodes(builder.nodes, result, params)
     }
 
-    /// Keeps the nodes the result depends on, pairs sines with cosines of one argument,
-    /// and gives each value a register that is reused after its last use.
-    fn from_nodes(nodes: Vec<Node>, result: u32) -> Program {
+    /// Keeps the nodes the result depends on, fuses constants and products into the
+    /// operations that use them, pairs sines with cosines of one argument, and gives each
+    /// value a register that is reused after its last use; `None` past 256 registers.
+    /// The first `params` nodes are the parameters: they keep the first registers, which
+    /// evaluation fills before the code runs.
+    fn from_nodes(mut nodes: Vec<Node>, result: u32, params: usize) -> Option<Program> {
         let n = nodes.len();
-        let operands = |node: &Node| -> Vec<u32> {
-            match node {
-                Node::Const(_) | Node::Param(_) => Vec::new(),
-                Node::Neg(a) | Node::Unary(_, a) => vec![*a],
-                Node::Binary(_, a, b) => vec![*a, *b],
-                Node::Select3(a, b, c) => vec![*a, *b, *c],
-                Node::Select4(a, b, c, d) => vec![*a, *b, *c, *d],
-                Node::Min(v) | Node::Max(v) => v.clone(),
-                Node::Call(_, v) | Node::CallPart(_, v, _) | Node::Internal(_, v) => v.clone(),
-                Node::Sum {
-                    from, to, params, ..
-                } => {
-                    let mut v = vec![*from, *to];
-                    v.extend(params);
-                    v
-                }
-            }
-        };
-        // Live nodes, from the result back.
-        let mut live = vec![false; n];
-        live[result as usize] = true;
-        for i in (0..n).rev() {
-            if live[i] {
-                for a in operands(&nodes[i]) {
-                    live[a as usize] = true;
-                }
-            }
-        }
+        let live = live_nodes(&nodes, result, params);
+        fuse(&mut nodes, &live, result);
+        let live = live_nodes(&nodes, result, params);
         // A sine and a cosine of one argument: the later one is filled by the earlier.
         let mut partner: Vec<Option<u32>> = vec![None; n];
         let mut trig: HashMap<u32, (Option<u32>, Option<u32>)> = HashMap::new();
@@ -457,32 +467,41 @@ impl Program {
             }
         }
         last_use[result as usize] = usize::MAX;
-        let mut register = vec![0u16; n];
-        let mut free: Vec<u16> = Vec::new();
-        let mut count = 0u16;
-        let mut take = |free: &mut Vec<u16>| {
-            free.pop().unwrap_or_else(|| {
-                count += 1;
-                count - 1
-            })
+        let mut register = vec![0u8; n];
+        let mut free: Vec<u8> = Vec::new();
+        let mut count = 0usize;
+        let mut take = |free: &mut Vec<u8>| -> Option<u8> {
+            match free.pop() {
+                Some(r) => Some(r),
+                None => {
+                    count += 1;
+                    u8::try_from(count - 1).ok()
+                }
+            }
         };
         let mut code = Vec::new();
+        let mut rare = Vec::new();
         for i in 0..n {
             if !live[i] {
                 continue;
             }
             if !filled[i] {
-                register[i] = take(&mut free);
+                register[i] = take(&mut free)?;
             }
             if let Some(p) = partner[i] {
-                register[p as usize] = take(&mut free);
+                register[p as usize] = take(&mut free)?;
             }
             let r = |a: &u32| register[*a as usize];
+            let list = |v: &[u32]| -> Box<[u8]> { v.iter().map(r).collect() };
             let out = register[i];
+            let mut add_rare = |entry: Rare| -> Option<Inst> {
+                rare.push(entry);
+                Some(Inst::Rare(out, u16::try_from(rare.len() - 1).ok()?))
+            };
             let inst = match &nodes[i] {
                 _ if filled[i] => None,
                 Node::Const(v) => Some(Inst::Const(out, *v)),
-                Node::Param(p) => Some(Inst::Param(out, *p)),
+                Node::Param(_) => None,
                 Node::Neg(a) => Some(Inst::Neg(out, r(a))),
                 Node::Unary(f, a) => match partner[i] {
                     Some(p) => {
@@ -493,34 +512,52 @@ impl Program {
                             Inst::SinCos(other, out, r(a))
                         })
                     }
-                    None => Some(Inst::Unary(out, *f, r(a))),
+                    None => Some(match f {
+                        Unary::Abs => Inst::Abs(out, r(a)),
+                        Unary::Sqrt => Inst::Sqrt(out, r(a)),
+                        Unary::Sqr => Inst::Mul(out, r(a), r(a)),
+                        _ => Inst::Unary(out, *f, r(a)),
+                    }),
                 },
-                Node::Binary(op, a, b) => Some(Inst::Binary(out, *op, r(a), r(b))),
+                Node::Binary(op, a, b) => Some(match op {
+                    Binary::Add => Inst::Add(out, r(a), r(b)),
+                    Binary::Sub => Inst::Sub(out, r(a), r(b)),
+                    Binary::Mul => Inst::Mul(out, r(a), r(b)),
+                    Binary::Div => Inst::Div(out, r(a), r(b)),
+                    _ => Inst::Binary(out, *op, r(a), r(b)),
+                }),
+                Node::WithConstant(op, a, k, swapped) => Some(match (op, swapped) {
+                    (Binary::Add, _) => Inst::AddK(out, r(a), *k),
+                    (Binary::Mul, _) => Inst::MulK(out, r(a), *k),
+                    (Binary::Sub, false) => Inst::AddK(out, r(a), -*k),
+                    (Binary::Sub, true) => Inst::KSub(out, r(a), *k),
+                    (Binary::Div, false) => match exact_reciprocal(*k) {
+                        Some(inverse) => Inst::MulK(out, r(a), inverse),
+                        None => Inst::DivK(out, r(a), *k),
+                    },
+                    (_, _) => Inst::KDiv(out, r(a), *k),
+                }),
+                Node::MulAdd(a, b, c) => Some(Inst::MulAdd(out, [r(a), r(b), r(c)])),
+                Node::MulSub(a, b, c) => Some(Inst::MulSub(out, [r(a), r(b), r(c)])),
                 Node::Select3(a, b, c) => Some(Inst::Select3(out, [r(a), r(b), r(c)])),
                 Node::Select4(a, b, c, d) => Some(Inst::Select4(out, [r(a), r(b), r(c), r(d)])),
-                Node::Min(v) => Some(Inst::Min(out, v.iter().map(r).collect())),
-                Node::Max(v) => Some(Inst::Max(out, v.iter().map(r).collect())),
-                Node::Call(f, v) => Some(Inst::Call(out, f.clone(), v.iter().map(r).collect())),
-                Node::CallPart(f, v, part) => Some(Inst::CallPart(
-                    out,
-                    f.clone(),
-                    v.iter().map(r).collect(),
-                    *part,
-                )),
-                Node::Internal(f, v) => Some(Inst::Internal(out, *f, v.iter().map(r).collect())),
+                Node::Min(v) => add_rare(Rare::Min(list(v))),
+                Node::Max(v) => add_rare(Rare::Max(list(v))),
+                Node::Call(f, v) => add_rare(Rare::Call(f.clone(), list(v))),
+                Node::CallPart(f, v, part) => add_rare(Rare::CallPart(f.clone(), list(v), *part)),
+                Node::Internal(f, v) => add_rare(Rare::Internal(*f, list(v))),
                 Node::Sum {
                     body,
                     from,
                     to,
                     product,
                     params,
-                } => Some(Inst::Sum {
-                    out,
+                } => add_rare(Rare::Sum {
                     body: body.clone(),
                     from: r(from),
                     to: r(to),
                     product: *product,
-                    params: params.iter().map(r).collect(),
+                    params: list(params),
                 }),
             };
             if let Some(inst) = inst {
@@ -528,7 +565,7 @@ impl Program {
             }
             // Operands whose last use is here go back to the pool, after this
             // instruction's own register was taken so that none is overwritten early.
-            let mut released: Vec<u16> = Vec::new();
+            let mut released: Vec<u8> = Vec::new();
             for a in operands(&nodes[i]) {
                 if last_use[a as usize] == i {
                     released.push(register[a as usize]);
@@ -538,21 +575,24 @@ impl Program {
             released.dedup();
             free.extend(released);
         }
-        Program {
+        Some(Program {
             code,
-            registers: usize::from(count).max(1),
+            rare,
+            params,
+            registers: count.max(1),
             result: register[result as usize],
-        }
+        })
     }
 
     /// The value at `args` (one per parameter; missing ones are 0).
     pub fn eval(&self, args: &[f64]) -> f64 {
-        if self.registers <= STACK_REGISTERS {
-            let mut regs = [0.0f64; STACK_REGISTERS];
-            self.run(&mut regs, args)
-        } else {
-            let mut regs = vec![0.0f64; self.registers];
-            self.run(&mut regs, args)
+        // The register file is as small as the program allows: it is cleared at every
+        // call. A power of two lets indices be masked instead of bounds-checked.
+        match self.registers {
+            0..=16 => self.run(&mut [0.0; 16], args),
+            17..=32 => self.run(&mut [0.0; 32], args),
+            33..=64 => self.run(&mut [0.0; 64], args),
+            _ => self.run(&mut [0.0; 256], args),
         }
     }
 
@@ -561,99 +601,210 @@ impl Program {
         self.eval(&[x, y, z])
     }
 
-    fn run(&self, r: &mut [f64], args: &[f64]) -> f64 {
-        let arg = |i: u8| args.get(usize::from(i)).copied().unwrap_or(0.0);
+    fn run<const N: usize>(&self, r: &mut [f64; N], args: &[f64]) -> f64 {
+        let at = |i: u8| usize::from(i) & (N - 1);
+        for (slot, arg) in r.iter_mut().zip(args).take(self.params) {
+            *slot = *arg;
+        }
         for inst in &self.code {
-            match inst {
-                Inst::Const(o, v) => r[*o as usize] = *v,
-                Inst::Param(o, p) => r[*o as usize] = arg(*p),
-                Inst::Neg(o, a) => r[*o as usize] = -r[*a as usize],
-                Inst::Unary(o, f, a) => r[*o as usize] = unary(*f, r[*a as usize]),
+            match *inst {
+                Inst::Const(o, v) => r[at(o)] = v,
+                Inst::Neg(o, a) => r[at(o)] = -r[at(a)],
+                Inst::Abs(o, a) => r[at(o)] = r[at(a)].abs(),
+                Inst::Sqrt(o, a) => r[at(o)] = r[at(a)].sqrt(),
+                Inst::Unary(o, f, a) => r[at(o)] = unary(f, r[at(a)]),
                 Inst::SinCos(s, c, a) => {
-                    let (sin, cos) = fast_math::sin_cos(r[*a as usize]);
-                    r[*s as usize] = sin;
-                    r[*c as usize] = cos;
+                    let (sin, cos) = fast_math::sin_cos(r[at(a)]);
+                    r[at(s)] = sin;
+                    r[at(c)] = cos;
                 }
-                Inst::Binary(o, op, a, b) => {
-                    r[*o as usize] = op.apply(r[*a as usize], r[*b as usize])
-                }
+                Inst::Add(o, a, b) => r[at(o)] = r[at(a)] + r[at(b)],
+                Inst::Sub(o, a, b) => r[at(o)] = r[at(a)] - r[at(b)],
+                Inst::Mul(o, a, b) => r[at(o)] = r[at(a)] * r[at(b)],
+                Inst::Div(o, a, b) => r[at(o)] = r[at(a)] / r[at(b)],
+                Inst::MulAdd(o, [a, b, c]) => r[at(o)] = r[at(a)] * r[at(b)] + r[at(c)],
+                Inst::MulSub(o, [a, b, c]) => r[at(o)] = r[at(a)] * r[at(b)] - r[at(c)],
+                Inst::AddK(o, a, k) => r[at(o)] = r[at(a)] + k,
+                Inst::MulK(o, a, k) => r[at(o)] = r[at(a)] * k,
+                Inst::KSub(o, a, k) => r[at(o)] = k - r[at(a)],
+                Inst::DivK(o, a, k) => r[at(o)] = r[at(a)] / k,
+                Inst::KDiv(o, a, k) => r[at(o)] = k / r[at(a)],
+                Inst::Binary(o, op, a, b) => r[at(o)] = op.apply(r[at(a)], r[at(b)]),
                 Inst::Select3(o, [c, a, b]) => {
-                    r[*o as usize] = if r[*c as usize] < 0.0 {
-                        r[*a as usize]
-                    } else {
-                        r[*b as usize]
-                    }
+                    r[at(o)] = if r[at(c)] < 0.0 { r[at(a)] } else { r[at(b)] }
                 }
                 Inst::Select4(o, [c, a, b, d]) => {
-                    let v = r[*c as usize];
-                    r[*o as usize] = if v < 0.0 {
-                        r[*a as usize]
+                    let v = r[at(c)];
+                    r[at(o)] = if v < 0.0 {
+                        r[at(a)]
                     } else if v == 0.0 {
-                        r[*b as usize]
+                        r[at(b)]
                     } else {
-                        r[*d as usize]
+                        r[at(d)]
                     }
                 }
-                Inst::Min(o, v) => {
-                    r[*o as usize] = v
-                        .iter()
-                        .map(|a| r[*a as usize])
-                        .fold(f64::INFINITY, fast_math::min)
-                }
-                Inst::Max(o, v) => {
-                    r[*o as usize] = v
-                        .iter()
-                        .map(|a| r[*a as usize])
-                        .fold(f64::NEG_INFINITY, fast_math::max)
-                }
-                Inst::Call(o, f, v) => {
-                    let values: Vec<f64> = v.iter().map(|a| r[*a as usize]).collect();
-                    r[*o as usize] = f.eval(&values);
-                }
-                Inst::CallPart(o, f, v, part) => {
-                    let values: Vec<f64> = v.iter().map(|a| r[*a as usize]).collect();
-                    let c = f.eval_vector(&values);
-                    r[*o as usize] = match part {
-                        5 => c[0] * 0.297 + c[1] * 0.589 + c[2] * 0.114,
-                        i => c[usize::from(*i).min(4)],
-                    };
-                }
-                Inst::Internal(o, f, v) => {
-                    let mut values = [0.0f64; 16];
-                    let n = v.len().min(16);
-                    for (slot, a) in values.iter_mut().zip(v.iter()) {
-                        *slot = r[*a as usize];
-                    }
-                    r[*o as usize] = f.eval(&values[..n]);
-                }
-                Inst::Sum {
-                    out,
-                    body,
-                    from,
-                    to,
-                    product,
-                    params,
-                } => {
-                    let (lo, hi) = (r[*from as usize], r[*to as usize]);
-                    let mut inner: Vec<f64> = params.iter().map(|a| r[*a as usize]).collect();
-                    inner.push(lo);
-                    let last = inner.len() - 1;
-                    let mut total = if *product { 1.0 } else { 0.0 };
-                    let mut i = lo;
-                    let mut steps = 0u32;
-                    while i <= hi && steps < analysis::function::SUM_STEPS {
-                        inner[last] = i;
-                        let v = body.eval(&inner);
-                        total = if *product { total * v } else { total + v };
-                        i += 1.0;
-                        steps += 1;
-                    }
-                    r[*out as usize] = total;
+                Inst::Rare(o, index) => {
+                    let v = self.run_rare(index, &r[..]);
+                    r[at(o)] = v;
                 }
             }
         }
-        r[self.result as usize]
+        r[at(self.result)]
     }
+
+    /// The value of a rare instruction, from the registers.
+    fn run_rare(&self, index: u16, r: &[f64]) -> f64 {
+        let get = |a: &u8| r[usize::from(*a)];
+        match &self.rare[usize::from(index)] {
+            Rare::Min(v) => v.iter().map(get).fold(f64::INFINITY, fast_math::min),
+            Rare::Max(v) => v.iter().map(get).fold(f64::NEG_INFINITY, fast_math::max),
+            Rare::Call(f, v) => {
+                let values: Vec<f64> = v.iter().map(get).collect();
+                f.eval(&values)
+            }
+            Rare::CallPart(f, v, part) => {
+                let values: Vec<f64> = v.iter().map(get).collect();
+                let c = f.eval_vector(&values);
+                match part {
+                    5 => c[0] * 0.297 + c[1] * 0.589 + c[2] * 0.114,
+                    i => c[usize::from(*i).min(4)],
+                }
+            }
+            Rare::Internal(f, v) => {
+                let mut values = [0.0f64; 16];
+                let n = v.len().min(16);
+                for (slot, a) in values.iter_mut().zip(v.iter()) {
+                    *slot = get(a);
+                }
+                f.eval(&values[..n])
+            }
+            Rare::Sum {
+                body,
+                from,
+                to,
+                product,
+                params,
+            } => {
+                let (lo, hi) = (get(from), get(to));
+                let mut inner: Vec<f64> = params.iter().map(get).collect();
+                inner.push(lo);
+                let last = inner.len() - 1;
+                let mut total = if *product { 1.0 } else { 0.0 };
+                let mut i = lo;
+                let mut steps = 0u32;
+                while i <= hi && steps < analysis::function::SUM_STEPS {
+                    inner[last] = i;
+                    let v = body.eval(&inner);
+                    total = if *product { total * v } else { total + v };
+                    i += 1.0;
+                    steps += 1;
+                }
+                total
+            }
+        }
+    }
+}
+
+/// The values a node reads.
+fn operands(node: &Node) -> Vec<u32> {
+    match node {
+        Node::Const(_) | Node::Param(_) => Vec::new(),
+        Node::Neg(a) | Node::Unary(_, a) | Node::WithConstant(_, a, _, _) => vec![*a],
+        Node::Binary(_, a, b) => vec![*a, *b],
+        Node::Select3(a, b, c) | Node::MulAdd(a, b, c) | Node::MulSub(a, b, c) => {
+            vec![*a, *b, *c]
+        }
+        Node::Select4(a, b, c, d) => vec![*a, *b, *c, *d],
+        Node::Min(v) | Node::Max(v) => v.clone(),
+        Node::Call(_, v) | Node::CallPart(_, v, _) | Node::Internal(_, v) => v.clone(),
+        Node::Sum {
+            from, to, params, ..
+        } => {
+            let mut v = vec![*from, *to];
+            v.extend(params);
+            v
+        }
+    }
+}
+
+/// The nodes the result depends on, and the parameters.
+fn live_nodes(nodes: &[Node], result: u32, params: usize) -> Vec<bool> {
+    let mut live = vec![false; nodes.len()];
+    live[..params].fill(true);
+    live[result as usize] = true;
+    for i in (0..nodes.len()).rev() {
+        if live[i] {
+            for a in operands(&nodes[i]) {
+                live[a as usize] = true;
+            }
+        }
+    }
+    live
+}
+
+/// Rewrites, in place, arithmetic with a constant operand into one node, and a sum or
+/// difference whose operand is a product used nowhere else into a multiply-add. The
+/// arithmetic is the same, operation for operation, so values do not change.
+fn fuse(nodes: &mut [Node], live: &[bool], result: u32) {
+    let mut uses = vec![0u32; nodes.len()];
+    uses[result as usize] += 1;
+    for (i, node) in nodes.iter().enumerate() {
+        if live[i] {
+            for a in operands(node) {
+                uses[a as usize] += 1;
+            }
+        }
+    }
+    let constant = |nodes: &[Node], i: u32| match nodes[i as usize] {
+        Node::Const(v) => Some(v),
+        _ => None,
+    };
+    let product = |nodes: &[Node], uses: &[u32], i: u32| match nodes[i as usize] {
+        Node::Binary(Binary::Mul, a, b) if uses[i as usize] == 1 => Some((a, b)),
+        _ => None,
+    };
+    for i in 0..nodes.len() {
+        if !live[i] {
+            continue;
+        }
+        let Node::Binary(op, a, b) = nodes[i] else {
+            continue;
+        };
+        if !matches!(op, Binary::Add | Binary::Sub | Binary::Mul | Binary::Div) {
+            continue;
+        }
+        // The rewritten node, and the product it swallowed.
+        let fused = if let Some(k) = constant(nodes, b) {
+            Some((Node::WithConstant(op, a, k, false), None))
+        } else if let Some(k) = constant(nodes, a) {
+            // k + a and k·a are a + k and a·k: addition and multiplication commute.
+            let swapped = matches!(op, Binary::Sub | Binary::Div);
+            Some((Node::WithConstant(op, b, k, swapped), None))
+        } else if op == Binary::Add {
+            if let Some((x, y)) = product(nodes, &uses, a) {
+                Some((Node::MulAdd(x, y, b), Some(a)))
+            } else {
+                product(nodes, &uses, b).map(|(x, y)| (Node::MulAdd(x, y, a), Some(b)))
+            }
+        } else if op == Binary::Sub {
+            product(nodes, &uses, a).map(|(x, y)| (Node::MulSub(x, y, b), Some(a)))
+        } else {
+            None
+        };
+        if let Some((node, swallowed)) = fused {
+            if let Some(p) = swallowed {
+                uses[p as usize] = 0;
+            }
+            nodes[i] = node;
+        }
+    }
+}
+
+/// 1/k when it is exact (k a power of two), so that a division by k can be a product.
+fn exact_reciprocal(k: f64) -> Option<f64> {
+    const MANTISSA: u64 = (1 << 52) - 1;
+    let inverse = 1.0 / k;
+    (k.is_normal() && inverse.is_normal() && k.to_bits() & MANTISSA == 0).then_some(inverse)
 }
 
 #[cfg(test)]
@@ -725,6 +876,59 @@ mod tests {
         let program = Program::compile(&f, 1).unwrap();
         assert!(program.registers <= 4, "{}", program.registers);
         assert_eq!(program.eval(&[0.5]), f.eval(&[0.5]));
+    }
+
+    #[test]
+    fn constants_and_products_fuse_without_changing_values() {
+        // 2·x + y·z - x·y / 4 - 3 / x + (x·x + 0.5)
+        let f = code(
+            &["x", "y", "z"],
+            vec![
+                Op::Const(2.0),
+                Op::Param(0),
+                Op::Mul,
+                Op::Param(1),
+                Op::Param(2),
+                Op::Mul,
+                Op::Add,
+                Op::Param(0),
+                Op::Param(1),
+                Op::Mul,
+                Op::Const(4.0),
+                Op::Div,
+                Op::Sub,
+                Op::Const(3.0),
+                Op::Param(0),
+                Op::Div,
+                Op::Sub,
+                Op::Param(0),
+                Op::Param(0),
+                Op::Mul,
+                Op::Const(0.5),
+                Op::Add,
+                Op::Add,
+            ],
+        );
+        let program = Program::compile(&f, 3).unwrap();
+        for p in [[0.3, -1.2, 2.5], [10.0, 0.0, -4.0], [-7.5, 3.3, 1e-3]] {
+            assert_eq!(program.eval(&p).to_bits(), f.eval(&p).to_bits(), "{p:?}");
+        }
+        let count = |pick: fn(&Inst) -> bool| program.code.iter().filter(|i| pick(i)).count();
+        assert_eq!(
+            count(|i| matches!(i, Inst::Const(..))),
+            0,
+            "{:#?}",
+            program.code
+        );
+        assert_eq!(
+            count(|i| matches!(i, Inst::MulAdd(..))),
+            1,
+            "{:#?}",
+            program.code
+        );
+        // x / 4 is x · 0.25, exactly; 3 / x stays a division.
+        assert_eq!(count(|i| matches!(i, Inst::MulK(_, _, k) if *k == 0.25)), 1);
+        assert_eq!(count(|i| matches!(i, Inst::KDiv(..))), 1);
     }
 
     #[test]
