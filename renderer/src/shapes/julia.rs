@@ -71,22 +71,25 @@ impl Julia {
 
     /// Whether the orbit of `p` stays bounded.
     pub fn inside_point(&self, p: DVec3) -> bool {
-        self.orbit(self.lift(p)).0
+        self.orbit::<false>(self.lift(p)).0
     }
 
-    /// Whether the orbit of `h` stays bounded, and a lower bound of the distance to the set
-    /// when it escapes (the step a march may take).
-    fn orbit(&self, h: DVec4) -> (bool, f64) {
+    /// Whether the orbit of `h` stays bounded, and with `DISTANCE` a lower bound of the
+    /// distance to the set when it escapes (the step a march may take). Without it the
+    /// logarithms of the estimate are skipped: bisection only asks inside or out.
+    fn orbit<const DISTANCE: bool>(&self, h: DVec4) -> (bool, f64) {
         match (self.algebra, self.function) {
-            (JuliaAlgebra::Quaternion, JuliaFunction::Cube) => self.quaternion_orbit(h, 3.0),
-            (JuliaAlgebra::Quaternion, _) => self.quaternion_orbit(h, 2.0),
-            (JuliaAlgebra::Hypercomplex, _) => self.hypercomplex_orbit(h),
+            (JuliaAlgebra::Quaternion, JuliaFunction::Cube) => {
+                self.quaternion_orbit::<DISTANCE>(h, 3.0)
+            }
+            (JuliaAlgebra::Quaternion, _) => self.quaternion_orbit::<DISTANCE>(h, 2.0),
+            (JuliaAlgebra::Hypercomplex, _) => self.hypercomplex_orbit::<DISTANCE>(h),
         }
     }
 
     /// Quaternion squares or cubes. Quaternion norms multiply, so the derivative's norm
     /// for the distance estimate is the power times the product of the orbit's norms.
-    fn quaternion_orbit(&self, h: DVec4, power: f64) -> (bool, f64) {
+    fn quaternion_orbit<const DISTANCE: bool>(&self, h: DVec4, power: f64) -> (bool, f64) {
         let p = self.parameter;
         let (mut x, mut y, mut z, mut w) = (h.x, h.y, h.z, h.w);
         let mut product: f64 = 1.0;
@@ -96,6 +99,9 @@ impl Julia {
             let x2 = x * x;
             let norm = x2 + d;
             if norm > self.exit {
+                if !DISTANCE {
+                    return (false, 0.0);
+                }
                 // POV-Ray's estimate over the k points of the orbit so far, the escaping
                 // one included: |h|·ln|h|² / (n^k · Π|h_j|).
                 let dist = norm.ln() / (product.sqrt() * scale * power);
@@ -122,7 +128,7 @@ impl Julia {
 
     /// Hypercomplex iteration: the algebra splits into two complex planes,
     /// (x - w) + i(y + z) and (x + w) + i(y - z), where f acts on each.
-    fn hypercomplex_orbit(&self, h: DVec4) -> (bool, f64) {
+    fn hypercomplex_orbit<const DISTANCE: bool>(&self, h: DVec4) -> (bool, f64) {
         let (mut a, mut b) = split(h);
         let (pa, pb) = split(self.parameter);
         let mut da = Complex::ONE;
@@ -130,6 +136,9 @@ impl Julia {
         for _ in 0..self.iterations {
             let norm = merged_norm(a, b);
             if norm > self.exit || !norm.is_finite() {
+                if !DISTANCE {
+                    return (false, 0.0);
+                }
                 let derivative = 0.5 * (da.norm() + db.norm());
                 let dist = if derivative > 0.0 {
                     0.5 * norm.sqrt() * norm.ln() / derivative
@@ -181,7 +190,7 @@ impl Julia {
             return 0;
         }
         let mut next_point = ray.origin + dir * depth;
-        let (mut current, mut dist) = self.orbit(self.lift(next_point));
+        let (mut current, mut dist) = self.orbit::<true>(self.lift(next_point));
         if current {
             // A ray starting inside (a shadow ray from the surface) moves off first.
             next_point += dir * (2.0 * TOLERANCE);
@@ -189,7 +198,7 @@ impl Julia {
             if depth > end {
                 return 0;
             }
-            (current, dist) = self.orbit(self.lift(next_point));
+            (current, dist) = self.orbit::<true>(self.lift(next_point));
         }
         let mut found = 0;
         'march: while depth < end && found < out.len() {
@@ -202,7 +211,7 @@ impl Julia {
                 }
                 let before = next_point;
                 next_point += dir * step;
-                let (next, next_dist) = self.orbit(self.lift(next_point));
+                let (next, next_dist) = self.orbit::<true>(self.lift(next_point));
                 if next != current {
                     depth -= step;
                     dist = step;
