@@ -628,10 +628,15 @@ impl Builder {
                     frame,
                 )
             }
-            scene::Shape::Torus { major, minor, .. } => (
+            scene::Shape::Torus {
+                major,
+                minor,
+                sturm,
+            } => (
                 Shape::Torus(Torus {
                     major: major.abs(),
                     minor: minor.abs(),
+                    sturm: *sturm,
                 }),
                 DAffine3::IDENTITY,
             ),

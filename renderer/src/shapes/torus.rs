@@ -5,12 +5,16 @@ use super::Roots;
 use crate::fast_math::{max, min};
 use crate::polynomial;
 use crate::ray::Ray;
+use crate::sturm;
 use glam::DVec3;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Torus {
     pub major: f64,
     pub minor: f64,
+    /// `sturm`: roots by Sturm sequences, slower than the closed form but sure to find
+    /// both of two close roots where a ray grazes the tube.
+    pub sturm: bool,
 }
 
 impl Torus {
@@ -62,9 +66,17 @@ impl Torus {
             *c *= power;
             power *= span;
         }
-        let (found, n) = polynomial::quartic_roots_in(&coeffs, 0.0, 1.0);
-        for &x in &found[..n] {
-            roots.push(t0 + x * span, 0);
+        if self.sturm {
+            let mut found = [0.0; polynomial::MAX_DEGREE];
+            let n = sturm::roots_in(&coeffs, 0.0, 1.0, &mut found);
+            for &x in &found[..n] {
+                roots.push(t0 + x * span, 0);
+            }
+        } else {
+            let (found, n) = polynomial::quartic_roots_in(&coeffs, 0.0, 1.0);
+            for &x in &found[..n] {
+                roots.push(t0 + x * span, 0);
+            }
         }
     }
 
@@ -97,4 +109,48 @@ pub(crate) fn quartic_along(o: DVec3, d: DVec3, major: f64, minor: f64) -> [f64;
         2.0 * qa * qb,
         qa * qa,
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn crossings(torus: &Torus, ray: &Ray) -> Vec<f64> {
+        let mut roots = Roots::new();
+        torus.intersect(ray, &mut roots);
+        roots.as_slice().iter().map(|r| r.t).collect()
+    }
+
+    #[test]
+    fn sturm_finds_the_same_crossings() {
+        let closed = Torus {
+            major: 2.0,
+            minor: 0.5,
+            sturm: false,
+        };
+        let sturm = Torus {
+            sturm: true,
+            ..closed
+        };
+        // Through both sides of the tube along x, and obliquely through one side.
+        for ray in [
+            Ray::new(DVec3::new(-5.0, 0.1, 0.0), DVec3::X),
+            Ray::new(DVec3::new(-5.0, 0.3, 0.4), DVec3::new(1.0, -0.1, 0.05)),
+        ] {
+            let (a, b) = (crossings(&closed, &ray), crossings(&sturm, &ray));
+            assert_eq!(a.len(), b.len(), "{a:?} {b:?}");
+            assert!(!a.is_empty());
+            for (x, y) in a.iter().zip(&b) {
+                assert!((x - y).abs() < 1e-9, "{a:?} {b:?}");
+            }
+        }
+        // At height 0.2 along x the tube is crossed where (|x| - 2)² = 0.25 - 0.04.
+        let along = crossings(&sturm, &Ray::new(DVec3::new(-5.0, 0.2, 0.0), DVec3::X));
+        let h = 0.21f64.sqrt();
+        let want = [3.0 - h, 3.0 + h, 7.0 - h, 7.0 + h];
+        assert_eq!(along.len(), 4, "{along:?}");
+        for (x, y) in along.iter().zip(want) {
+            assert!((x - y).abs() < 1e-9, "{along:?}");
+        }
+    }
 }
