@@ -36,38 +36,46 @@ struct MeshBuilder {
     textures: Vec<Arc<Texture>>,
 }
 
+/// The index of `value` in `list`, appending it the first time its bits are met, so that
+/// equal vertices, normals and uv coordinates are stored once.
+fn intern<K: std::hash::Hash + Eq, T>(
+    ids: &mut HashMap<K, u32>,
+    list: &mut Vec<T>,
+    key: K,
+    value: T,
+) -> u32 {
+    *ids.entry(key).or_insert_with(|| {
+        list.push(value);
+        (list.len() - 1) as u32
+    })
+}
+
 impl MeshBuilder {
     fn vertex(&mut self, v: DVec3) -> u32 {
-        let list = &mut self.geometry.vertices;
-        *self
-            .vertex_ids
-            .entry(v.to_array().map(f64::to_bits))
-            .or_insert_with(|| {
-                list.push(v);
-                (list.len() - 1) as u32
-            })
+        intern(
+            &mut self.vertex_ids,
+            &mut self.geometry.vertices,
+            v.to_array().map(f64::to_bits),
+            v,
+        )
     }
 
     fn normal(&mut self, n: DVec3) -> u32 {
-        let list = &mut self.geometry.normals;
-        *self
-            .normal_ids
-            .entry(n.to_array().map(f64::to_bits))
-            .or_insert_with(|| {
-                list.push(n);
-                (list.len() - 1) as u32
-            })
+        intern(
+            &mut self.normal_ids,
+            &mut self.geometry.normals,
+            n.to_array().map(f64::to_bits),
+            n,
+        )
     }
 
     fn uv(&mut self, uv: DVec2) -> u32 {
-        let list = &mut self.geometry.uvs;
-        *self
-            .uv_ids
-            .entry(uv.to_array().map(f64::to_bits))
-            .or_insert_with(|| {
-                list.push(uv);
-                (list.len() - 1) as u32
-            })
+        intern(
+            &mut self.uv_ids,
+            &mut self.geometry.uvs,
+            uv.to_array().map(f64::to_bits),
+            uv,
+        )
     }
 
     fn texture(&mut self, texture: Rc<Texture>) -> u32 {
