@@ -17,7 +17,7 @@ pub fn check(workspace: &Workspace) -> Vec<Diagnostic> {
         .collect();
     let mut warnings = Vec::new();
     for file in workspace.user_files() {
-        for (name, range) in file.name_refs.iter() {
+        for (name, range) in file.name_refs() {
             if defined.contains(name.as_str())
                 || name.len() < 3
                 || name.chars().any(|c| !(c.is_ascii_lowercase() || c == '_'))

@@ -4,6 +4,7 @@
 use crate::files::FileSource;
 use std::collections::{BTreeMap, HashMap, HashSet};
 use std::sync::{Arc, Mutex, OnceLock};
+use syntax::ast::{AstNode, Include};
 use syntax::green_walk::{GreenNodeRef, Step, walk};
 use syntax::{SyntaxKind, SyntaxNode, TextRange};
 
@@ -49,9 +50,9 @@ pub struct FileFacts {
     pub definitions: Arc<[Definition]>,
     /// Every identifier that is not a definition, by name and place.
     pub uses: Arc<[(String, TextRange)]>,
-    /// The identifiers read as values (not the targets of `#read`): where a misspelt
+    /// Which of `uses` are read as values (not the targets of `#read`): where a misspelt
     /// keyword shows up.
-    pub name_refs: Arc<[(String, TextRange)]>,
+    name_refs: Arc<[usize]>,
     /// The files it includes by a literal name, with the place of each `#include`.
     pub includes: Arc<[(String, TextRange)]>,
     /// The tokens of legacy syntax.
@@ -63,7 +64,7 @@ pub struct FileFacts {
 struct NameFacts {
     definitions: Arc<[Definition]>,
     uses: Arc<[(String, TextRange)]>,
-    name_refs: Arc<[(String, TextRange)]>,
+    name_refs: Arc<[usize]>,
     includes: Arc<[(String, TextRange)]>,
     legacy_tokens: Arc<[(SyntaxKind, TextRange)]>,
 }
@@ -141,6 +142,11 @@ impl FileFacts {
         [".inc", ".mcr", ".mac"]
             .iter()
             .any(|ext| lower.ends_with(ext))
+    }
+
+    /// The identifiers read as values, by name and place.
+    pub fn name_refs(&self) -> impl Iterator<Item = &(String, TextRange)> {
+        self.name_refs.iter().map(|&index| &self.uses[index])
     }
 
     /// The facts of `name`, from `parsed` when the caller already holds its tree.
@@ -225,7 +231,7 @@ impl NameFacts {
                                 .iter()
                                 .any(|node| node.kind() == SyntaxKind::FILE_IO)
                         {
-                            name_refs.push((name.clone(), token.range));
+                            name_refs.push(uses.len());
                         }
                         uses.push((name, token.range));
                     }
@@ -287,17 +293,8 @@ fn definition_kind(enclosing: &[GreenNodeRef<'_>]) -> DefinitionKind {
     }
 }
 
-/// The name of an `#include "name"` directive whose name is a plain string literal.
+/// The name of an `#include "name"` directive whose name is a plain string literal; a
+/// computed name is known to the evaluator alone.
 fn literal_include(include: &GreenNodeRef<'_>) -> Option<String> {
-    let tokens: Vec<_> = include
-        .tokens()
-        .into_iter()
-        .filter(|(kind, _)| !kind.is_trivia())
-        .collect();
-    // Only `#include "name"`: a computed name is known to the evaluator alone.
-    let [_, _, (SyntaxKind::STRING, string)] = tokens.as_slice() else {
-        return None;
-    };
-    let (name, problems) = syntax::lexer::unescape_string(string);
-    problems.is_empty().then_some(name)
+    Include::cast(include.detached())?.path()
 }
