@@ -72,16 +72,8 @@ impl Evaluator<'_> {
 
 #[cfg(test)]
 mod tests {
-    use crate::files::MemoryFiles;
+    use crate::eval::tests::{evaluate_err, evaluate_ok};
     use crate::scene::{LightGroup, Scene, Shape};
-    use crate::{EvalOptions, evaluate};
-
-    fn scene(text: &str) -> Scene {
-        let files = MemoryFiles::new().with("scene.pov", format!("#version 3.7;\n{text}"));
-        let evaluation = evaluate("scene.pov", &files, &EvalOptions::default());
-        assert!(!evaluation.has_errors(), "{:?}", evaluation.diagnostics);
-        evaluation.scene.unwrap()
-    }
 
     fn group(scene: &Scene, i: usize) -> &LightGroup {
         match &scene.objects[i].shape {
@@ -92,7 +84,7 @@ mod tests {
 
     #[test]
     fn group_lights_stay_in_their_group() {
-        let scene = scene(
+        let scene = evaluate_ok(
             "light_source { <0, 10, 0> rgb 1 }
              #declare G = light_group {
                light_source { <1, 0, 0> rgb 1 }
@@ -114,22 +106,10 @@ mod tests {
 
     #[test]
     fn light_groups_take_no_other_modifiers() {
-        let files = MemoryFiles::new().with(
-            "scene.pov",
-            "#version 3.7;\nlight_group { sphere { 0, 1 } pigment { rgb 1 } }",
-        );
-        let evaluation = evaluate("scene.pov", &files, &EvalOptions::default());
-        let error = evaluation
-            .diagnostics
-            .iter()
-            .find(|d| d.is_error())
-            .unwrap();
+        let error = evaluate_err("light_group { sphere { 0, 1 } pigment { rgb 1 } }");
         assert!(
-            error
-                .message
-                .starts_with("expected an object, light_source, global_lights"),
-            "{}",
-            error.message
+            error.starts_with("expected an object, light_source, global_lights"),
+            "{error}"
         );
     }
 }

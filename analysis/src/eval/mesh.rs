@@ -626,20 +626,12 @@ struct CornerList<'a> {
 
 #[cfg(test)]
 mod tests {
-    use crate::files::MemoryFiles;
+    use crate::eval::tests::{check_debug, evaluate_ok};
     use crate::scene::mesh::{FaceTexture, Mesh};
     use crate::scene::{NormalKind, Pigment, Scene, Shape, Texture};
-    use crate::{EvalOptions, evaluate};
-    use expect_test::{Expect, expect};
+    use expect_test::expect;
     use glam::{DVec2, DVec3};
     use std::sync::Arc;
-
-    fn scene(text: &str) -> Scene {
-        let files = MemoryFiles::new().with("scene.pov", format!("#version 3.7;\n{text}"));
-        let evaluation = evaluate("scene.pov", &files, &EvalOptions::default());
-        assert!(!evaluation.has_errors(), "{:?}", evaluation.diagnostics);
-        evaluation.scene.unwrap()
-    }
 
     fn mesh(scene: &Scene, i: usize) -> &Mesh {
         match &scene.objects[i].shape {
@@ -648,25 +640,9 @@ mod tests {
         }
     }
 
-    /// The first error, rendered as the CLI shows it.
-    fn check_error(text: &str, expect: Expect) {
-        let files = MemoryFiles::new().with("scene.pov", format!("#version 3.7;\n{text}"));
-        let evaluation = evaluate("scene.pov", &files, &EvalOptions::default());
-        let errors: Vec<_> = evaluation
-            .diagnostics
-            .iter()
-            .filter(|d| d.is_error())
-            .cloned()
-            .collect();
-        expect.assert_eq(&syntax::diagnostic::render_human(
-            &errors,
-            &evaluation.sources,
-        ));
-    }
-
     #[test]
     fn mesh_triangles_share_corners_and_textures() {
-        let scene = scene(
+        let scene = evaluate_ok(
             "#declare Red = texture { pigment { rgb x } }
              #declare Blue = texture { pigment { rgb z } }
              #declare M = mesh {
@@ -699,7 +675,7 @@ mod tests {
 
     #[test]
     fn mesh2_indices_default_to_the_faces() {
-        let scene = scene(
+        let scene = evaluate_ok(
             "mesh2 {
                vertex_vectors { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> }
                normal_vectors { 4, -z, -z, -z, -z }
@@ -717,7 +693,7 @@ mod tests {
 
     #[test]
     fn mesh2_faces_take_normal_indices_first() {
-        let scene = scene(
+        let scene = evaluate_ok(
             "mesh2 {
                vertex_vectors { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> }
                normal_vectors { 1, -z }
@@ -735,7 +711,7 @@ mod tests {
 
     #[test]
     fn uv_mapped_textures_stay_on_the_surface() {
-        let scene = scene(
+        let scene = evaluate_ok(
             "#declare Uv = texture { uv_mapping pigment { checker scale 0.5 } }
              mesh {
                triangle { 0, x, y uv_vectors <0,0>, <1,0>, <0,1> texture { Uv } }
@@ -780,7 +756,7 @@ mod tests {
 
     #[test]
     fn uv_mapping_comes_before_the_texture() {
-        check_error(
+        check_debug(
             "sphere { 0, 1 pigment { checker } uv_mapping }",
             expect![[r#"
                 scene.pov:2:35: error: uv_mapping must come before the object's texture, pigment and normal
@@ -792,7 +768,7 @@ mod tests {
 
     #[test]
     fn mesh_errors_are_located() {
-        check_error(
+        check_debug(
             "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } face_indices { 1, <0,1,3> } }",
             expect![[r#"
                 scene.pov:2:75: error: vertex index 3 is out of range: the mesh has 3 vertex vectors
@@ -800,7 +776,7 @@ mod tests {
                       |                                                                           ^
             "#]],
         );
-        check_error(
+        check_debug(
             "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } face_indices { 1, <0,1,2>, 0 } }",
             expect![[r#"
                 scene.pov:2:84: error: texture index 0 names no texture: the mesh2 has no texture_list
@@ -808,7 +784,7 @@ mod tests {
                       |                                                                                    ^
             "#]],
         );
-        check_error(
+        check_debug(
             "mesh2 { vertex_vectors { 3, 0, x, y } uv_vectors { 2, 0, 1 } face_indices { 1, <0,1,2> } }",
             expect![[r#"
                 scene.pov:2:62: error: mesh2 needs uv_indices: its 2 uv_vectors do not match its 3 vertices one to one
@@ -816,7 +792,7 @@ mod tests {
                       |                                                              ^~~~~~~~~~~~
             "#]],
         );
-        check_error(
+        check_debug(
             "mesh2 { vertex_vectors { 4, 0, x, y } face_indices { 1, <0,1,2> } }",
             expect![[r#"
                 scene.pov:2:37: error: vertex_vectors declares 4 elements but lists 3
@@ -824,7 +800,7 @@ mod tests {
                       |                                     ^
             "#]],
         );
-        check_error(
+        check_debug(
             "mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0,1,2> } vertex_vectors { 1, 0 } }",
             expect![[r#"
                 scene.pov:2:67: error: vertex_vectors is out of place or repeated: mesh2's sections come in the order vertex_vectors, normal_vectors, uv_vectors, texture_list, face_indices, normal_indices, uv_indices
@@ -832,7 +808,7 @@ mod tests {
                       |                                                                   ^~~~~~~~~~~~~~
             "#]],
         );
-        check_error(
+        check_debug(
             "mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } }",
             expect![[r#"
                 scene.pov:2:37: error: expected a texture identifier, found 'pigment'; a mesh triangle takes only declared textures
@@ -840,7 +816,7 @@ mod tests {
                       |                                     ^~~~~~~
             "#]],
         );
-        check_error(
+        check_debug(
             "mesh { triangle { 0, x, 2*x } }",
             expect![[r#"
                 scene.pov:2:1: error: a mesh needs at least one triangle
@@ -848,7 +824,7 @@ mod tests {
                       | ^~~~
             "#]],
         );
-        check_error(
+        check_debug(
             "sphere { 0, 1 hierarchy off }",
             expect![[r#"
                 scene.pov:2:15: error: 'hierarchy' does not apply to sphere

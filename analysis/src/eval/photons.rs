@@ -184,31 +184,15 @@ pub(super) fn spread_to_parts(object: &mut Object) {
 
 #[cfg(test)]
 mod tests {
-    use crate::files::MemoryFiles;
-    use crate::scene::{LightPhotons, ObjectPhotons, PhotonDensity, Photons, Scene, Shape};
-    use crate::{EvalOptions, evaluate};
-
-    fn scene(text: &str) -> Result<Scene, String> {
-        let files = MemoryFiles::new().with("scene.pov", format!("#version 3.7;\n{text}"));
-        let evaluation = evaluate("scene.pov", &files, &EvalOptions::default());
-        match evaluation.scene {
-            Some(scene) if !evaluation.diagnostics.iter().any(|d| d.is_error()) => Ok(scene),
-            _ => Err(evaluation
-                .diagnostics
-                .iter()
-                .map(|d| d.message.clone())
-                .collect::<Vec<_>>()
-                .join("\n")),
-        }
-    }
+    use crate::eval::tests::{evaluate_err, evaluate_ok};
+    use crate::scene::{LightPhotons, ObjectPhotons, PhotonDensity, Photons, Shape};
 
     #[test]
     fn global_block_takes_every_setting() {
-        let s = scene(
+        let s = evaluate_ok(
             "global_settings { photons { count 20000 gather 3, 8 jitter 0.2 max_trace_level 4
                adc_bailout 0.01 autostop 0.5 expand_thresholds 0.3, 25 radius 0.7, 2 } }",
-        )
-        .unwrap();
+        );
         let p = s.settings.photons.unwrap();
         assert_eq!(p.density, PhotonDensity::Count(20000));
         assert_eq!((p.gather_min, p.gather_max), (3, 8));
@@ -225,14 +209,14 @@ mod tests {
 
     #[test]
     fn global_block_defaults_follow_povray() {
-        let s = scene("global_settings { photons { spacing 0.1 radius , 0.5 } }").unwrap();
+        let s = evaluate_ok("global_settings { photons { spacing 0.1 radius , 0.5 } }");
         let p = s.settings.photons.unwrap();
         assert_eq!(p.density, PhotonDensity::Spacing(0.1));
         assert_eq!((p.radius, p.radius_multiplier), (None, 0.5));
         let defaults = Photons::default();
         assert_eq!((p.gather_min, p.gather_max, p.jitter), (20, 100, 0.4));
         assert_eq!(p.expand_min, defaults.expand_min);
-        assert!(scene("sphere { 0, 1 }").unwrap().settings.photons.is_none());
+        assert!(evaluate_ok("sphere { 0, 1 }").settings.photons.is_none());
     }
 
     #[test]
@@ -252,19 +236,18 @@ mod tests {
                 "gather needs 1 <= min <= max photons",
             ),
         ] {
-            let error = scene(&format!("global_settings {{ {text} }}")).unwrap_err();
+            let error = evaluate_err(&format!("global_settings {{ {text} }}"));
             assert_eq!(error, message, "{text}");
         }
     }
 
     #[test]
     fn object_block_reaches_the_parts_of_a_csg() {
-        let s = scene(
+        let s = evaluate_ok(
             "union { sphere { 0, 1 } sphere { x, 1 } photons { target 0.5 refraction on collect off } }
              sphere { 0, 1 photons { target reflection on pass_through } no_shadow }
              sphere { 0, 1 split_union off }",
-        )
-        .unwrap();
+        );
         let expected = ObjectPhotons {
             target: Some(0.5),
             refraction: true,
@@ -285,11 +268,10 @@ mod tests {
 
     #[test]
     fn lights_shoot_both_kinds_unless_told() {
-        let s = scene(
+        let s = evaluate_ok(
             "light_source { 0, 1 }
              light_source { 0, 1 photons { refraction off area_light } }",
-        )
-        .unwrap();
+        );
         assert_eq!(s.lights[0].photons, LightPhotons::default());
         assert!(s.lights[0].photons.refraction && s.lights[0].photons.reflection);
         let second = s.lights[1].photons;

@@ -314,29 +314,12 @@ pub fn place_with_importance(object: &mut Object, default: f64) {
 
 #[cfg(test)]
 mod tests {
-    use crate::eval::{EvalOptions, Evaluation, evaluate};
-    use crate::files::MemoryFiles;
-    use crate::scene::{Radiosity, Scene, Shape};
+    use crate::eval::tests::{evaluate_37, evaluate_ok};
+    use crate::scene::{Radiosity, Shape};
     use expect_test::{Expect, expect};
 
-    fn eval(text: &str) -> Evaluation {
-        let files = MemoryFiles::new().with("scene.pov", format!("#version 3.7;\n{text}"));
-        evaluate("scene.pov", &files, &EvalOptions::default())
-    }
-
-    fn scene(text: &str) -> Scene {
-        let evaluation = eval(text);
-        let errors: Vec<_> = evaluation
-            .diagnostics
-            .iter()
-            .filter(|d| d.is_error())
-            .collect();
-        assert!(errors.is_empty(), "{errors:?}");
-        evaluation.scene.expect("the scene evaluates")
-    }
-
     fn radiosity(block: &str) -> Radiosity {
-        scene(&format!("global_settings {{ radiosity {{ {block} }} }}"))
+        evaluate_ok(&format!("global_settings {{ radiosity {{ {block} }} }}"))
             .settings
             .radiosity
             .expect("radiosity on")
@@ -344,7 +327,7 @@ mod tests {
 
     /// The error and warnings, rendered as the front ends print them.
     fn check_diagnostics(text: &str, expect: Expect) {
-        let evaluation = eval(text);
+        let evaluation = evaluate_37(text);
         expect.assert_eq(&syntax::diagnostic::render_human(
             &evaluation.diagnostics,
             &evaluation.sources,
@@ -354,7 +337,7 @@ mod tests {
     #[test]
     fn an_empty_block_turns_radiosity_on_with_the_manuals_defaults() {
         assert_eq!(radiosity(""), Radiosity::default());
-        assert!(scene("").settings.radiosity.is_none());
+        assert!(evaluate_ok("").settings.radiosity.is_none());
     }
 
     #[test]
@@ -482,7 +465,7 @@ mod tests {
 
     #[test]
     fn importance_comes_from_the_object_its_csg_or_the_default() {
-        let s = scene(
+        let s = evaluate_ok(
             "sphere { 0, 1 }
              union { sphere { 0, 1 radiosity { importance 0.25 } } sphere { 0, 1 }
                      radiosity { importance 0.5 } }
@@ -515,7 +498,7 @@ mod tests {
 
     #[test]
     fn subsurface_settings_and_translucency_are_read() {
-        let s = scene(
+        let s = evaluate_ok(
             "global_settings { subsurface { samples 20, 30 radiosity on } mm_per_unit 25.4 }
              sphere { 0, 1 finish { subsurface { translucency <1, 0.5, 0.25> } } }",
         );
@@ -529,6 +512,6 @@ mod tests {
             panic!("a plain texture")
         };
         assert_eq!(finish.translucency, Some(glam::DVec3::new(1.0, 0.5, 0.25)));
-        assert_eq!(scene("").settings.mm_per_unit, 10.0);
+        assert_eq!(evaluate_ok("").settings.mm_per_unit, 10.0);
     }
 }

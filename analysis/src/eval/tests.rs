@@ -10,9 +10,14 @@ fn eval(text: &str) -> Evaluation {
     evaluate("scene.pov", &files, &EvalOptions::default())
 }
 
+/// The evaluation of a 3.7 scene text.
+pub(super) fn evaluate_37(text: &str) -> Evaluation {
+    eval(&format!("#version 3.7;\n{text}"))
+}
+
 /// The scene a 3.7 scene text describes; panics with the diagnostics if it has errors.
 pub(super) fn evaluate_ok(text: &str) -> Scene {
-    let evaluation = eval(&format!("#version 3.7;\n{text}"));
+    let evaluation = evaluate_37(text);
     match evaluation.scene {
         Some(scene) if !evaluation.has_errors() => scene,
         _ => panic!("{:?}", evaluation.diagnostics),
@@ -21,7 +26,7 @@ pub(super) fn evaluate_ok(text: &str) -> Scene {
 
 /// The message of the error that stops a 3.7 scene text; panics when there is none.
 pub(super) fn evaluate_err(text: &str) -> String {
-    let evaluation = eval(&format!("#version 3.7;\n{text}"));
+    let evaluation = evaluate_37(text);
     match evaluation.diagnostics.iter().find(|d| d.is_error()) {
         Some(error) => error.message.clone(),
         None => panic!("no error in {text}"),
@@ -29,8 +34,8 @@ pub(super) fn evaluate_err(text: &str) -> String {
 }
 
 /// The `#debug` output, or the rendered error.
-fn check_debug(text: &str, expect: Expect) {
-    let evaluation = eval(&format!("#version 3.7;\n{text}"));
+pub(super) fn check_debug(text: &str, expect: Expect) {
+    let evaluation = evaluate_37(text);
     let errors: Vec<_> = evaluation
         .diagnostics
         .iter()
