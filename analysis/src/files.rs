@@ -24,6 +24,24 @@ pub trait FileSource {
     }
 }
 
+/// The text of an SDL file's bytes, and whether they were read as Latin-1. POV-Ray reads
+/// bytes, and scenes and includes written for it are often Latin-1: text that is not UTF-8
+/// is read as Latin-1 rather than refused.
+pub fn decode_sdl(bytes: Vec<u8>) -> (String, bool) {
+    match String::from_utf8(bytes) {
+        Ok(text) => (text, false),
+        Err(error) => (
+            error.into_bytes().iter().map(|&b| char::from(b)).collect(),
+            true,
+        ),
+    }
+}
+
+/// An SDL file's text, read from disk as [`decode_sdl`] reads bytes.
+pub fn read_sdl_file(path: &std::path::Path) -> std::io::Result<String> {
+    std::fs::read(path).map(|bytes| decode_sdl(bytes).0)
+}
+
 /// Files held in memory, such as the Typst package's `includes` and `files` dictionaries.
 #[derive(Debug, Clone, Default)]
 pub struct MemoryFiles {
@@ -141,20 +159,9 @@ impl DirectoryFiles {
 
 impl FileSource for DirectoryFiles {
     fn read(&self, name: &str) -> Option<Arc<str>> {
-        self.candidates(name).into_iter().find_map(|path| {
-            let bytes = std::fs::read(path).ok()?;
-            // POV-Ray scenes are often Latin-1; keep them readable rather than refusing them.
-            Some(match String::from_utf8(bytes) {
-                Ok(text) => Arc::from(text),
-                Err(error) => Arc::from(
-                    error
-                        .into_bytes()
-                        .iter()
-                        .map(|&b| char::from(b))
-                        .collect::<String>(),
-                ),
-            })
-        })
+        self.candidates(name)
+            .into_iter()
+            .find_map(|path| read_sdl_file(&path).ok().map(Arc::from))
     }
 
     fn read_bytes(&self, name: &str) -> Option<Arc<[u8]>> {

@@ -53,7 +53,7 @@ impl DiskFiles {
 impl FileSource for DiskFiles {
     fn read(&self, name: &str) -> Option<Arc<str>> {
         self.candidates(name)
-            .find_map(|candidate| std::fs::read_to_string(candidate).ok())
+            .find_map(|candidate| analysis::files::read_sdl_file(&candidate).ok())
             .map(Arc::from)
     }
 

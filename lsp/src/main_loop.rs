@@ -11,6 +11,7 @@ use crate::publisher::{Publication, Publisher};
 use crate::snapshot::{Snapshot, World};
 use analysis::EvalOptions;
 use analysis::db::{self, File, FilePath, Project, ProjectFiles, RootDatabase};
+use analysis::files::read_sdl_file;
 use analysis::ide::embedded;
 use salsa::Setter;
 use std::collections::{BTreeMap, HashMap};
@@ -223,7 +224,7 @@ impl MainLoop {
                     if self.files.contains_key(&key) {
                         continue;
                     }
-                    if let Ok(text) = std::fs::read_to_string(&path) {
+                    if let Ok(text) = read_sdl_file(&path) {
                         self.set_file(key, &text);
                         loaded = true;
                     }
@@ -316,7 +317,7 @@ impl MainLoop {
     /// bundled text), or leaves the database.
     fn release(&mut self, path: &FilePath) {
         let original = match path {
-            FilePath::Disk(disk) => std::fs::read_to_string(disk).ok(),
+            FilePath::Disk(disk) => read_sdl_file(disk).ok(),
             FilePath::Bundled(name) => analysis::stdinc::get(name).map(str::to_owned),
             FilePath::Embedded { .. } => None,
         };
@@ -431,7 +432,7 @@ impl MainLoop {
             unloaded.dedup();
             let mut loaded = false;
             for path in unloaded {
-                if let Ok(text) = std::fs::read_to_string(&path) {
+                if let Ok(text) = read_sdl_file(&path) {
                     self.set_file(FilePath::Disk(path), &text);
                     loaded = true;
                 }

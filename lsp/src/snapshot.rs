@@ -6,6 +6,7 @@ use crate::bundled::BundledFiles;
 use crate::convert;
 use crate::documents::{DocumentKind, DocumentView, Part};
 use analysis::db::{self, File, FilePath, Project, RootDatabase};
+use analysis::files::read_sdl_file;
 use std::collections::HashMap;
 use std::sync::Arc;
 use syntax::line_index::LineIndex;
@@ -127,7 +128,7 @@ impl Snapshot {
             return Some(convert::range(db::line_index(&self.db, *file), text, range));
         }
         let text = match path {
-            FilePath::Disk(disk) => std::fs::read_to_string(disk).ok()?,
+            FilePath::Disk(disk) => read_sdl_file(disk).ok()?,
             FilePath::Bundled(name) => analysis::stdinc::get(name)?.to_owned(),
             FilePath::Embedded { .. } => return None,
         };

@@ -208,6 +208,25 @@ fn check_reports_every_file_and_its_debug_output() {
 }
 
 #[test]
+fn latin1_scenes_and_includes_are_read_as_povray_reads_them() {
+    let dir = scene_dir(&[]);
+    // "é" as the single byte 0xE9: not UTF-8, as many scenes written for POV-Ray are.
+    std::fs::write(
+        dir.path().join("scene.pov"),
+        b"#version 3.7;\n// caf\xe9\n#include \"grass.inc\"\n#debug concat(Name, \"\\n\")\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("grass.inc"),
+        b"#declare Name = \"pr\xe9\";\n",
+    )
+    .unwrap();
+    let output = povrayst(dir.path(), &["check", "scene.pov"]);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    assert_eq!(stderr(&output), "pr\u{e9}\n");
+}
+
+#[test]
 fn includes_come_from_the_scene_directory_and_library_paths() {
     let dir = scene_dir(&[]);
     let scenes = dir.path().join("scenes");

@@ -8,6 +8,7 @@
 
 use crate::Outcome;
 use crate::scene_paths;
+use analysis::files::decode_sdl;
 use analysis::format::{FormatConfig, format_text};
 use clap::Args;
 
@@ -38,8 +39,8 @@ pub fn run(args: &FmtArgs) -> Outcome {
     };
     let mut unformatted = 0;
     for file in &files {
-        let text = match std::fs::read_to_string(file) {
-            Ok(text) => text,
+        let (text, latin1) = match std::fs::read(file) {
+            Ok(bytes) => decode_sdl(bytes),
             Err(error) => {
                 eprintln!("povrayst: cannot read {}: {error}", file.display());
                 return Outcome::UsageOrIo;
@@ -52,7 +53,7 @@ pub fn run(args: &FmtArgs) -> Outcome {
         unformatted += 1;
         if args.check {
             eprintln!("not formatted: {}", file.display());
-        } else if let Err(error) = crate::whole_file::write(file, formatted.as_bytes()) {
+        } else if let Err(error) = write_back(file, &formatted, latin1) {
             eprintln!("povrayst: cannot write {}: {error}", file.display());
             return Outcome::UsageOrIo;
         }
@@ -66,4 +67,18 @@ pub fn run(args: &FmtArgs) -> Outcome {
     } else {
         Outcome::Success
     }
+}
+
+/// Writes the formatted text in the encoding the file was read in, so that a Latin-1 scene
+/// stays Latin-1 (formatting changes only whitespace, so every character still fits).
+fn write_back(file: &std::path::Path, text: &str, latin1: bool) -> std::io::Result<()> {
+    let bytes = if latin1 {
+        text.chars()
+            .map(u8::try_from)
+            .collect::<Result<Vec<u8>, _>>()
+            .map_err(|_| std::io::Error::other("a character outside Latin-1"))?
+    } else {
+        text.as_bytes().to_vec()
+    };
+    crate::whole_file::write(file, &bytes)
 }

@@ -13,7 +13,7 @@ pub struct SyntaxArgs {
 
 pub fn run(args: &SyntaxArgs) -> Outcome {
     let name = args.file.display().to_string();
-    let text = match std::fs::read_to_string(&args.file) {
+    let text = match analysis::files::read_sdl_file(&args.file) {
         Ok(text) => text,
         Err(error) => {
             eprintln!("povrayst: cannot read {name}: {error}");

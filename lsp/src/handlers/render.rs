@@ -8,6 +8,7 @@ use crate::documents::DocumentKind;
 use crate::snapshot::Snapshot;
 use analysis::MemoryFiles;
 use analysis::db::{self, FilePath};
+use analysis::files::read_sdl_file;
 use renderer::RenderOptions;
 use serde::{Deserialize, Serialize};
 use tower_lsp_server::jsonrpc::{Error, ErrorCode, Result};
@@ -64,7 +65,7 @@ pub fn handle(snapshot: Snapshot, params: RenderParams) -> Result<RenderResult> 
         let text = match snapshot.world.project.files(&snapshot.db).get(path) {
             Some(file) => Some(file.text(&snapshot.db).clone()),
             None => match path {
-                FilePath::Disk(disk) => std::fs::read_to_string(disk).ok().map(Into::into),
+                FilePath::Disk(disk) => read_sdl_file(disk).ok().map(Into::into),
                 _ => None,
             },
         };
