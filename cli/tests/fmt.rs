@@ -30,3 +30,22 @@ fn check_lists_unformatted_files_and_fails() {
     );
     assert_eq!(povrayst(&["fmt", "--check", scene]).status.code(), Some(0));
 }
+
+#[test]
+fn latin1_files_are_formatted_and_stay_latin1() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("scene.pov");
+    std::fs::write(&scene, b"// caf\xe9\n#if (1)\nsphere { 0, 1 }\n#end\n").unwrap();
+    let scene = scene.to_str().unwrap();
+    let formatted = povrayst(&["fmt", scene]);
+    assert_eq!(
+        formatted.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&formatted.stderr)
+    );
+    assert_eq!(
+        std::fs::read(scene).unwrap(),
+        b"// caf\xe9\n#if (1)\n  sphere { 0, 1 }\n#end\n"
+    );
+}
