@@ -6,6 +6,7 @@ pub mod ast;
 pub mod diagnostic;
 mod grammar;
 pub mod green_walk;
+pub mod keyword_groups;
 mod kind;
 pub mod lexer;
 pub mod line_index;

@@ -12,6 +12,7 @@ use super::keyword_docs::keyword_doc;
 use crate::db::{self, Db, File, FilePath, SymbolKind, ValueKind};
 use std::collections::BTreeMap;
 use syntax::SyntaxKind::{self, *};
+use syntax::keyword_groups::DIRECTIVES;
 use syntax::{SyntaxToken, TextRange, TextSize};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -291,37 +292,6 @@ fn identifiers(
         });
     }
 }
-
-const DIRECTIVES: &[&str] = &[
-    "break",
-    "case",
-    "debug",
-    "declare",
-    "default",
-    "else",
-    "elseif",
-    "end",
-    "error",
-    "fclose",
-    "fopen",
-    "for",
-    "if",
-    "ifdef",
-    "ifndef",
-    "include",
-    "local",
-    "macro",
-    "range",
-    "read",
-    "render",
-    "statistics",
-    "switch",
-    "undef",
-    "version",
-    "warning",
-    "while",
-    "write",
-];
 
 const SNIPPETS: &[(&str, &str)] = &[
     ("box", "box { <${1:-1, -1, -1}>, <${2:1, 1, 1}> }"),

@@ -1,160 +1,16 @@
 //! The Sublime syntax definition that `highlight` gives Typst for povray raw blocks,
-//! written from the lexer's own list of reserved words so that it cannot drift from the
+//! written from the lexer's own reserved words and their groups so that it cannot drift from the
 //! language we parse.
 
-use syntax::KEYWORDS;
-
-/// Directives: reserved words that follow `#`.
-const DIRECTIVES: &[&str] = &[
-    "break",
-    "case",
-    "debug",
-    "declare",
-    "default",
-    "else",
-    "elseif",
-    "end",
-    "error",
-    "fclose",
-    "fopen",
-    "for",
-    "if",
-    "ifdef",
-    "ifndef",
-    "include",
-    "local",
-    "macro",
-    "range",
-    "read",
-    "render",
-    "statistics",
-    "switch",
-    "undef",
-    "version",
-    "warning",
-    "while",
-    "write",
-];
-
-/// Built-in functions of floats, vectors and strings.
-const FUNCTIONS: &[&str] = &[
-    "abs",
-    "acos",
-    "acosh",
-    "asc",
-    "asin",
-    "asinh",
-    "atan",
-    "atan2",
-    "atanh",
-    "bitwise_and",
-    "bitwise_or",
-    "bitwise_xor",
-    "ceil",
-    "chr",
-    "concat",
-    "cos",
-    "cosh",
-    "datetime",
-    "defined",
-    "degrees",
-    "dimension_size",
-    "dimensions",
-    "div",
-    "exp",
-    "file_exists",
-    "floor",
-    "inside",
-    "int",
-    "ln",
-    "log",
-    "max",
-    "max_extent",
-    "min",
-    "min_extent",
-    "mod",
-    "pow",
-    "radians",
-    "rand",
-    "seed",
-    "select",
-    "sin",
-    "sinh",
-    "sqrt",
-    "str",
-    "strcmp",
-    "strlen",
-    "strlwr",
-    "strupr",
-    "substr",
-    "tan",
-    "tanh",
-    "trace",
-    "val",
-    "vaxis_rotate",
-    "vcross",
-    "vdot",
-    "vlength",
-    "vnormalize",
-    "vrotate",
-    "vstr",
-    "vturbulence",
-];
-
-/// Named constants and the scene's read-only values.
-const CONSTANTS: &[&str] = &[
-    "clock",
-    "clock_delta",
-    "clock_on",
-    "false",
-    "final_clock",
-    "final_frame",
-    "frame_number",
-    "image_height",
-    "image_width",
-    "initial_clock",
-    "initial_frame",
-    "input_file_name",
-    "no",
-    "now",
-    "off",
-    "on",
-    "pi",
-    "t",
-    "tau",
-    "true",
-    "u",
-    "v",
-    "x",
-    "y",
-    "yes",
-    "z",
-];
-
-fn alternatives(words: &[&str]) -> String {
-    let mut words = words.to_vec();
-    // Longest first, so that `sinh` is not read as `sin` followed by `h`.
-    words.sort_by(|a, b| b.len().cmp(&a.len()).then(a.cmp(b)));
-    words.join("|")
-}
-
-fn reserved(list: &[&'static str]) -> Vec<&'static str> {
-    list.iter()
-        .copied()
-        .filter(|word| KEYWORDS.iter().any(|(keyword, _)| keyword == word))
-        .collect()
-}
+use syntax::keyword_groups::{
+    CONSTANTS, DIRECTIVES, FUNCTIONS, MATERIALS, OBJECTS, alternation, ungrouped,
+};
 
 /// The definition, in the YAML form of Sublime Text's `.sublime-syntax` files.
 pub fn sublime_syntax() -> String {
-    let special: Vec<&str> = [FUNCTIONS, CONSTANTS].concat();
-    let functions = reserved(FUNCTIONS);
-    let constants = reserved(CONSTANTS);
-    let others: Vec<&str> = KEYWORDS
-        .iter()
-        .map(|(keyword, _)| *keyword)
-        .filter(|keyword| !special.contains(keyword))
-        .collect();
+    // Objects and materials are not told apart here, and a directive's word without its
+    // `#` is a plain keyword too.
+    let others = [DIRECTIVES, OBJECTS, MATERIALS, &ungrouped()].concat();
     format!(
         r#"%YAML 1.2
 ---
@@ -202,16 +58,17 @@ contexts:
       scope: punctuation.definition.string.end.povray
       pop: true
 "#,
-        directives = alternatives(DIRECTIVES),
-        functions = alternatives(&functions),
-        constants = alternatives(&constants),
-        others = alternatives(&others),
+        directives = alternation(DIRECTIVES),
+        functions = alternation(FUNCTIONS),
+        constants = alternation(CONSTANTS),
+        others = alternation(&others),
     )
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use syntax::KEYWORDS;
 
     #[test]
     fn every_reserved_word_is_highlighted() {
