@@ -53,6 +53,7 @@ pub const OBJECTS: &[&str] = &[
     "isosurface",
     "julia_fractal",
     "lathe",
+    "lemon",
     "light_group",
     "light_source",
     "merge",

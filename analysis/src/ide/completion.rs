@@ -12,7 +12,7 @@ use super::keyword_docs::keyword_doc;
 use crate::db::{self, Db, File, FilePath, SymbolKind, ValueKind};
 use std::collections::BTreeMap;
 use syntax::SyntaxKind::{self, *};
-use syntax::keyword_groups::DIRECTIVES;
+use syntax::keyword_groups::{DIRECTIVES, OBJECTS};
 use syntax::{SyntaxToken, TextRange, TextSize};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -321,51 +321,13 @@ const SNIPPETS: &[(&str, &str)] = &[
     ("union", "union {\n\t$0\n}"),
 ];
 
-const OBJECTS: &[&str] = &[
+/// What a scene holds besides objects, cameras and lights.
+const SCENE_ITEMS: &[&str] = &[
     "background",
-    "bicubic_patch",
-    "blob",
-    "box",
-    "camera",
-    "cone",
-    "cubic",
-    "cylinder",
-    "difference",
-    "disc",
     "fog",
     "global_settings",
-    "height_field",
-    "intersection",
-    "isosurface",
-    "julia_fractal",
-    "lathe",
-    "lemon",
-    "light_group",
-    "light_source",
-    "merge",
-    "mesh",
-    "mesh2",
-    "object",
-    "ovus",
-    "parametric",
-    "plane",
-    "poly",
-    "polygon",
-    "polynomial",
-    "prism",
-    "quadric",
-    "quartic",
     "rainbow",
     "sky_sphere",
-    "smooth_triangle",
-    "sor",
-    "sphere",
-    "sphere_sweep",
-    "superellipsoid",
-    "text",
-    "torus",
-    "triangle",
-    "union",
 ];
 
 const TRANSFORMS: &[&str] = &["matrix", "rotate", "scale", "transform", "translate"];
@@ -582,7 +544,7 @@ const GLOBAL_ITEMS: &[&str] = &[
 fn block_vocabulary(keyword: Option<SyntaxKind>) -> (Vec<&'static str>, &'static [ValueKind]) {
     let join = |lists: &[&[&'static str]]| lists.concat();
     match keyword {
-        None => (join(&[OBJECTS]), &[]),
+        None => (join(&[OBJECTS, SCENE_ITEMS]), &[]),
         Some(PIGMENT_KW) => (
             join(&[PATTERNS, PATTERN_MODIFIERS, PIGMENT_ITEMS, TRANSFORMS]),
             &[ValueKind::Pigment, ValueKind::Color],
@@ -676,6 +638,22 @@ mod tests {
                 Keyword sphere_sweep
                 Snippet sphere"#]],
         );
+    }
+
+    #[test]
+    fn scene_items_at_the_top_and_only_objects_inside_csg() {
+        check(
+            "#declare R = 1;\nl$0",
+            expect![[r#"
+                Keyword lathe
+                Keyword lemon
+                Keyword light_group
+                Keyword light_source
+                Snippet light_source"#]],
+        );
+        check("#declare R = 1;\nbac$0", expect!["Keyword background"]);
+        check("union { sphere { 0, 1 } bac$0 }", expect![""]);
+        check("union { sphere { 0, 1 } le$0 }", expect!["Keyword lemon"]);
     }
 
     #[test]
