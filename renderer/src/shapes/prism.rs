@@ -170,9 +170,13 @@ impl Prism {
         };
         let (o2, d2) = (DVec2::new(o.x, o.z), DVec2::new(d.x, d.z));
         let e = d2.length_squared();
+        // The shadow is widened by a hair: a straight wall on the box's face (a flat side of
+        // the outline) must not be culled when rounding puts the ray's entry just inside.
+        let (lo, hi) = self.outline;
+        let hair = DVec2::splat(1e-9 * (hi - lo).max_element());
         let shadow = (
-            o2.min(o2 + d2 * (t_out - t_in)),
-            o2.max(o2 + d2 * (t_out - t_in)),
+            o2.min(o2 + d2 * (t_out - t_in)) - hair,
+            o2.max(o2 + d2 * (t_out - t_in)) + hair,
         );
         let n = o.cross(d);
         for (index, segment) in self.segments.iter().enumerate() {
@@ -375,6 +379,31 @@ mod tests {
         assert_eq!(segments.len(), 8);
         assert!((segments[3].at(1.0) - DVec2::ZERO).length() < 1e-15);
         assert!((segments[4].at(0.0) - DVec2::new(1.0, 1.0)).length() < 1e-15);
+    }
+
+    #[test]
+    fn rays_through_a_flat_side_on_the_box_meet_it() {
+        // The triangle's flat side lies on its box's face at z = -0.5: every ray entering
+        // through it, wherever rounding puts the entry point, crosses the prism twice.
+        let p = pts(&[(-0.6, -0.5), (0.6, -0.5), (0.0, 0.55), (-0.6, -0.5)]);
+        let prism = Prism::new(
+            SplineKind::Linear,
+            PrismSweep::Linear,
+            (-1.0, 1.0),
+            &p,
+            false,
+            false,
+        )
+        .unwrap();
+        let d = DVec3::new(0.8944271909999159, 0.0, 0.4472135954999579);
+        for i in 0..1000 {
+            let x = -0.55 + 1.1 * f64::from(i) / 1000.0;
+            let entry = DVec3::new(x, 0.3, -0.5);
+            let ray = Ray::new(entry - d * (7.7 + f64::from(i) / 1700.0), d);
+            let hits = crossings(&prism, &ray);
+            assert_eq!(hits.len(), 2, "x = {x}: {hits:?}");
+            assert_eq!(hits[0].1, 0, "x = {x}: {hits:?}");
+        }
     }
 
     #[test]
