@@ -17,6 +17,7 @@ pub mod lint;
 pub mod noise;
 pub mod pattern;
 pub mod scene;
+pub mod spelling;
 pub mod spline;
 pub mod stdinc;
 

@@ -68,34 +68,6 @@ impl Evaluator<'_> {
             .iter()
             .map(|(kw, _)| *kw)
             .filter(move |_| lower);
-        let limit = (name.len() / 3).clamp(1, 3);
-        declared
-            .chain(keywords)
-            .filter(|candidate| *candidate != name)
-            .map(|candidate| {
-                (
-                    edit_distance(&name.to_lowercase(), &candidate.to_lowercase()),
-                    candidate,
-                )
-            })
-            .filter(|(distance, _)| *distance <= limit)
-            .min_by_key(|(distance, candidate)| (*distance, candidate.len()))
-            .map(|(_, candidate)| candidate.to_owned())
+        crate::spelling::closest(name, declared.chain(keywords)).map(str::to_owned)
     }
-}
-
-/// Levenshtein distance, for "did you mean" suggestions.
-pub fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut diagonal = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let substitution = diagonal + usize::from(ca != cb);
-            diagonal = row[j + 1];
-            row[j + 1] = substitution.min(row[j] + 1).min(row[j + 1] + 1);
-        }
-    }
-    row[b.len()]
 }

@@ -99,29 +99,13 @@ fn suggestions(db: &dyn Db, position: FilePosition, name: &str, limit: usize) ->
         .chain(keywords)
         .filter(|candidate| candidate != name)
         .filter_map(|candidate| {
-            let distance = edit_distance(name, &candidate);
+            let distance = crate::spelling::edit_distance(name, &candidate);
             (distance <= most).then_some((distance, candidate))
         })
         .collect();
     near.sort();
     near.dedup_by(|a, b| a.1 == b.1);
     near.into_iter().take(limit).map(|(_, c)| c).collect()
-}
-
-/// Levenshtein distance, by characters.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut previous = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let substitution = previous + usize::from(ca != cb);
-            previous = row[j + 1];
-            row[j + 1] = substitution.min(row[j] + 1).min(previous + 1);
-        }
-    }
-    row[b.len()]
 }
 
 #[cfg(test)]

@@ -38,27 +38,5 @@ pub fn check(workspace: &Workspace) -> Vec<Diagnostic> {
 
 /// The reserved word nearest to `name`, if one is close enough to be a typo.
 fn closest_keyword(name: &str) -> Option<&'static str> {
-    let limit = (name.len() / 3).clamp(1, 3);
-    syntax::KEYWORDS
-        .iter()
-        .map(|(keyword, _)| (edit_distance(name, keyword), *keyword))
-        .filter(|(distance, _)| *distance <= limit)
-        .min_by_key(|(distance, keyword)| (*distance, keyword.len()))
-        .map(|(_, keyword)| keyword)
-}
-
-/// Levenshtein distance over bytes; names here are ASCII.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b = b.as_bytes();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.bytes().enumerate() {
-        let mut diagonal = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let substitution = diagonal + usize::from(ca != cb);
-            diagonal = row[j + 1];
-            row[j + 1] = substitution.min(row[j] + 1).min(row[j + 1] + 1);
-        }
-    }
-    row[b.len()]
+    crate::spelling::closest(name, syntax::KEYWORDS.iter().map(|(keyword, _)| *keyword))
 }
