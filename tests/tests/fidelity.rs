@@ -292,3 +292,29 @@ fn photon_caustic_lights_the_floor_as_povray_does() {
     eprintln!("caustic without photons: cells {cells:.1}, percentiles {percentiles:.1}");
     assert!(cells > 10.0 || percentiles > 8.0, "{cells} {percentiles}");
 }
+
+/// The dispersing prism's thresholds (blurred by 2 pixels, as photons are stochastic) catch
+/// a spectrum that is missing or white: the same scene without photons, or with an
+/// interior that does not disperse, fails them.
+#[test]
+fn wrong_prism_spectra_fail_the_thresholds() {
+    let (prism, reference) = scene_and_reference("photons-prism");
+    let source = prism.source();
+    for (what, from, to) in [
+        (
+            "no photons",
+            "photons { count 40000 gather 15, 60 autostop 0 jitter 0.4 }",
+            "",
+        ),
+        ("no dispersion", "dispersion 1.2", "dispersion 1"),
+    ] {
+        assert!(
+            source.contains(from),
+            "photons-prism.pov no longer has `{from}`"
+        );
+        let wrong = prism.render_with(&source.replace(from, to)).unwrap();
+        let d = compare_blurred(&reference, &wrong, prism.thresholds.blur).unwrap();
+        eprintln!("photons-prism with {what}: {d}");
+        assert!(prism.thresholds.check(&d).is_err(), "{what} passes: {d}");
+    }
+}
