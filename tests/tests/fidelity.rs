@@ -48,18 +48,14 @@ fn renders_match_povray() {
 /// camera taken the wrong way round fails, as does a light moved a little.
 #[test]
 fn wrong_renders_fail_the_thresholds() {
-    let (basic, reference) = scene_and_reference("basic");
-    let source = basic.source();
-    for (what, from, to) in [
-        ("unmirrored camera", "-1.333*x", "1.333*x"),
-        ("moved light", "<4, 6, -6>", "<4.5, 6, -6>"),
-        ("duller highlight", "specular 0.5", "specular 0.3"),
-    ] {
-        assert!(source.contains(from), "basic.pov no longer has `{from}`");
-        let wrong = basic.render_with(&source.replace(from, to)).unwrap();
-        let d = compare(&reference, &wrong).unwrap();
-        assert!(basic.thresholds.check(&d).is_err(), "{what} passes: {d}");
-    }
+    wrong_versions_fail(
+        "basic",
+        &[
+            ("unmirrored camera", "-1.333*x", "1.333*x"),
+            ("moved light", "<4, 6, -6>", "<4.5, 6, -6>"),
+            ("duller highlight", "specular 0.5", "specular 0.3"),
+        ],
+    );
 }
 
 /// The radiosity thresholds, loose as stochastic light needs, still catch wrong light: the
@@ -293,28 +289,47 @@ fn photon_caustic_lights_the_floor_as_povray_does() {
     assert!(cells > 10.0 || percentiles > 8.0, "{cells} {percentiles}");
 }
 
-/// The dispersing prism's thresholds (blurred by 2 pixels, as photons are stochastic) catch
-/// a spectrum that is missing or white: the same scene without photons, or with an
-/// interior that does not disperse, fails them.
-#[test]
-fn wrong_prism_spectra_fail_the_thresholds() {
-    let (prism, reference) = scene_and_reference("photons-prism");
-    let source = prism.source();
-    for (what, from, to) in [
-        (
-            "no photons",
-            "photons { count 40000 gather 15, 60 autostop 0 jitter 0.4 }",
-            "",
-        ),
-        ("no dispersion", "dispersion 1.2", "dispersion 1"),
-    ] {
-        assert!(
-            source.contains(from),
-            "photons-prism.pov no longer has `{from}`"
-        );
-        let wrong = prism.render_with(&source.replace(from, to)).unwrap();
-        let d = compare_blurred(&reference, &wrong, prism.thresholds.blur).unwrap();
-        eprintln!("photons-prism with {what}: {d}");
-        assert!(prism.thresholds.check(&d).is_err(), "{what} passes: {d}");
+/// Renders the manifest's scene `name` with each `(what, from, to)` change to its source and
+/// asserts that every such wrong picture fails the scene's thresholds (blurred as the
+/// scene's comparison is).
+fn wrong_versions_fail(name: &str, changes: &[(&str, &str, &str)]) {
+    let (scene, reference) = scene_and_reference(name);
+    let source = scene.source();
+    for (what, from, to) in changes {
+        assert!(source.contains(from), "{name} no longer has `{from}`");
+        let wrong = scene.render_with(&source.replace(from, to)).unwrap();
+        let d = compare_blurred(&reference, &wrong, scene.thresholds.blur).unwrap();
+        eprintln!("{name} with {what}: {d}");
+        assert!(scene.thresholds.check(&d).is_err(), "{what} passes: {d}");
     }
+}
+
+/// The light-transport scenes' thresholds catch wrong light: the dispersing prism's
+/// (blurred by 2 pixels, as photons are stochastic) a spectrum that is missing or white,
+/// fog-ground's a fog thinning a little faster or along the untilted up direction,
+/// rainbow's a bow one degree wider or arcs fading over other angles.
+#[test]
+fn wrong_light_transport_fails_the_thresholds() {
+    let photons = "photons { count 40000 gather 15, 60 autostop 0 jitter 0.4 }";
+    wrong_versions_fail(
+        "photons-prism",
+        &[
+            ("no photons", photons, ""),
+            ("no dispersion", "dispersion 1.2", "dispersion 1"),
+        ],
+    );
+    wrong_versions_fail(
+        "fog-ground",
+        &[
+            ("a lower fog", "fog_alt 0.7", "fog_alt 0.6"),
+            ("an upright fog", "up <0.15, 1, 0>", "up y"),
+        ],
+    );
+    wrong_versions_fail(
+        "rainbow",
+        &[
+            ("a wider bow", "angle 42", "angle 43"),
+            ("other fading", "falloff_angle 90", "falloff_angle 120"),
+        ],
+    );
 }
