@@ -172,16 +172,23 @@ impl FileSource for DirectoryFiles {
     }
 
     fn names(&self) -> Vec<String> {
-        let mut names: Vec<String> = self
-            .paths
-            .iter()
-            .filter_map(|dir| std::fs::read_dir(dir).ok())
-            .flatten()
-            .filter_map(|entry| entry.ok()?.file_name().into_string().ok())
-            .filter(|name| name.ends_with(".inc"))
-            .collect();
-        names.sort();
-        names.dedup();
-        names
+        include_files_in(self.paths.iter().map(std::path::PathBuf::as_path))
     }
+}
+
+/// The `.inc` files directly in `dirs`, sorted and without repeats: what a "missing
+/// include" error lists as available.
+pub fn include_files_in<'a>(dirs: impl IntoIterator<Item = &'a std::path::Path>) -> Vec<String> {
+    let mut names: Vec<String> = dirs
+        .into_iter()
+        .filter_map(|dir| std::fs::read_dir(dir).ok())
+        .flatten()
+        .filter_map(|entry| entry.ok())
+        .filter(|entry| entry.file_type().is_ok_and(|t| t.is_file()))
+        .filter_map(|entry| entry.file_name().into_string().ok())
+        .filter(|name| name.ends_with(".inc"))
+        .collect();
+    names.sort();
+    names.dedup();
+    names
 }

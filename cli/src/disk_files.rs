@@ -64,19 +64,7 @@ impl FileSource for DiskFiles {
     }
 
     fn names(&self) -> Vec<String> {
-        let mut names: Vec<String> = self
-            .search_path
-            .iter()
-            .filter_map(|dir| std::fs::read_dir(dir).ok())
-            .flatten()
-            .filter_map(|entry| entry.ok())
-            .filter(|entry| entry.file_type().is_ok_and(|t| t.is_file()))
-            .filter_map(|entry| entry.file_name().into_string().ok())
-            .filter(|name| name.ends_with(".inc"))
-            .collect();
-        names.sort();
-        names.dedup();
-        names
+        analysis::files::include_files_in(self.search_path.iter().map(PathBuf::as_path))
     }
 }
 

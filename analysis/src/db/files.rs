@@ -173,17 +173,8 @@ impl FileSource for ProjectFiles<'_> {
         let Some(dir) = path.search_dir() else {
             return Vec::new();
         };
-        let mut names: Vec<String> = std::iter::once(dir)
-            .chain(project.library_paths(self.db).iter().map(PathBuf::as_path))
-            .filter_map(|dir| std::fs::read_dir(dir).ok())
-            .flatten()
-            .filter_map(|entry| entry.ok())
-            .filter(|entry| entry.file_type().is_ok_and(|t| t.is_file()))
-            .filter_map(|entry| entry.file_name().into_string().ok())
-            .filter(|name| name.ends_with(".inc"))
-            .collect();
-        names.sort();
-        names.dedup();
-        names
+        crate::files::include_files_in(
+            std::iter::once(dir).chain(project.library_paths(self.db).iter().map(PathBuf::as_path)),
+        )
     }
 }
