@@ -7,6 +7,7 @@ use crate::convert;
 use crate::documents::{DocumentKind, DocumentView, Part};
 use analysis::db::{self, File, FilePath, Project, RootDatabase};
 use analysis::files::read_sdl_file;
+use analysis::ide::FilePosition;
 use std::collections::HashMap;
 use std::sync::Arc;
 use syntax::line_index::LineIndex;
@@ -50,6 +51,23 @@ impl Snapshot {
                 Some((part, block.from_host(offset)?))
             }),
         }
+    }
+
+    /// The part of an open document at a protocol position, and the position in its file
+    /// that the analysis answers for.
+    pub fn analysis_position(
+        &self,
+        uri: &Uri,
+        position: Position,
+    ) -> Option<(&Part, FilePosition)> {
+        let (part, offset) = self.file_position(uri, position)?;
+        Some((
+            part,
+            FilePosition {
+                file: part.file,
+                offset,
+            },
+        ))
     }
 
     /// The part of an open document that a protocol range falls in, and the range in

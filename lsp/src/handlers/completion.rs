@@ -1,7 +1,6 @@
 //! `textDocument/completion`.
 
 use crate::snapshot::Snapshot;
-use analysis::ide::FilePosition;
 use analysis::ide::completion::{CompletionConfig, CompletionKind, completions};
 use tower_lsp_server::jsonrpc::Result;
 use tower_lsp_server::ls_types::{
@@ -11,12 +10,9 @@ use tower_lsp_server::ls_types::{
 
 pub fn handle(snapshot: Snapshot, params: CompletionParams) -> Result<Option<CompletionResponse>> {
     let at = &params.text_document_position;
-    let Some((part, offset)) = snapshot.file_position(&at.text_document.uri, at.position) else {
+    let Some((part, position)) = snapshot.analysis_position(&at.text_document.uri, at.position)
+    else {
         return Ok(None);
-    };
-    let position = FilePosition {
-        file: part.file,
-        offset,
     };
     let items = completions(&snapshot.db, position, &CompletionConfig::default())
         .into_iter()

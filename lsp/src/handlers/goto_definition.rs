@@ -1,7 +1,6 @@
 //! `textDocument/definition`.
 
 use crate::snapshot::Snapshot;
-use analysis::ide::FilePosition;
 use analysis::ide::goto_definition::{GotoDefinitionConfig, goto_definition};
 use tower_lsp_server::jsonrpc::Result;
 use tower_lsp_server::ls_types::{GotoDefinitionParams, GotoDefinitionResponse};
@@ -11,12 +10,8 @@ pub fn handle(
     params: GotoDefinitionParams,
 ) -> Result<Option<GotoDefinitionResponse>> {
     let at = &params.text_document_position_params;
-    let Some((part, offset)) = snapshot.file_position(&at.text_document.uri, at.position) else {
+    let Some((_, position)) = snapshot.analysis_position(&at.text_document.uri, at.position) else {
         return Ok(None);
-    };
-    let position = FilePosition {
-        file: part.file,
-        offset,
     };
     let locations: Vec<_> =
         goto_definition(&snapshot.db, position, &GotoDefinitionConfig::default())

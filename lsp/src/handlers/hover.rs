@@ -1,19 +1,15 @@
 //! `textDocument/hover`.
 
 use crate::snapshot::Snapshot;
-use analysis::ide::FilePosition;
 use analysis::ide::hover::{HoverConfig, hover};
 use tower_lsp_server::jsonrpc::Result;
 use tower_lsp_server::ls_types::{Hover, HoverContents, HoverParams, MarkupContent, MarkupKind};
 
 pub fn handle(snapshot: Snapshot, params: HoverParams) -> Result<Option<Hover>> {
     let at = &params.text_document_position_params;
-    let Some((part, offset)) = snapshot.file_position(&at.text_document.uri, at.position) else {
+    let Some((part, position)) = snapshot.analysis_position(&at.text_document.uri, at.position)
+    else {
         return Ok(None);
-    };
-    let position = FilePosition {
-        file: part.file,
-        offset,
     };
     Ok(
         hover(&snapshot.db, position, &HoverConfig::default()).map(|result| Hover {

@@ -1,19 +1,14 @@
 //! `textDocument/references`.
 
 use crate::snapshot::Snapshot;
-use analysis::ide::FilePosition;
 use analysis::ide::references::{ReferencesConfig, find_references};
 use tower_lsp_server::jsonrpc::Result;
 use tower_lsp_server::ls_types::{Location, ReferenceParams};
 
 pub fn handle(snapshot: Snapshot, params: ReferenceParams) -> Result<Option<Vec<Location>>> {
     let at = &params.text_document_position;
-    let Some((part, offset)) = snapshot.file_position(&at.text_document.uri, at.position) else {
+    let Some((_, position)) = snapshot.analysis_position(&at.text_document.uri, at.position) else {
         return Ok(None);
-    };
-    let position = FilePosition {
-        file: part.file,
-        offset,
     };
     let config = ReferencesConfig {
         include_declaration: params.context.include_declaration,

@@ -1,7 +1,6 @@
 //! `textDocument/prepareRename` and `textDocument/rename`.
 
 use crate::snapshot::Snapshot;
-use analysis::ide::FilePosition;
 use analysis::ide::rename::{RenameConfig, prepare_rename, rename};
 use std::collections::HashMap;
 use tower_lsp_server::jsonrpc::{Error, Result};
@@ -13,13 +12,10 @@ pub fn prepare(
     snapshot: Snapshot,
     params: TextDocumentPositionParams,
 ) -> Result<Option<PrepareRenameResponse>> {
-    let Some((part, offset)) = snapshot.file_position(&params.text_document.uri, params.position)
+    let Some((part, position)) =
+        snapshot.analysis_position(&params.text_document.uri, params.position)
     else {
         return Ok(None);
-    };
-    let position = FilePosition {
-        file: part.file,
-        offset,
     };
     match prepare_rename(&snapshot.db, position) {
         Ok(range) => Ok(Some(PrepareRenameResponse::Range(
@@ -31,12 +27,8 @@ pub fn prepare(
 
 pub fn handle(snapshot: Snapshot, params: RenameParams) -> Result<Option<WorkspaceEdit>> {
     let at = &params.text_document_position;
-    let Some((part, offset)) = snapshot.file_position(&at.text_document.uri, at.position) else {
+    let Some((_, position)) = snapshot.analysis_position(&at.text_document.uri, at.position) else {
         return Ok(None);
-    };
-    let position = FilePosition {
-        file: part.file,
-        offset,
     };
     let config = RenameConfig {
         refuse_clashes: true,

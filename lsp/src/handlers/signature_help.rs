@@ -1,7 +1,6 @@
 //! `textDocument/signatureHelp`.
 
 use crate::snapshot::Snapshot;
-use analysis::ide::FilePosition;
 use analysis::ide::signature_help::{SignatureHelpConfig, signature_help};
 use tower_lsp_server::jsonrpc::Result;
 use tower_lsp_server::ls_types::{
@@ -11,12 +10,8 @@ use tower_lsp_server::ls_types::{
 
 pub fn handle(snapshot: Snapshot, params: SignatureHelpParams) -> Result<Option<SignatureHelp>> {
     let at = &params.text_document_position_params;
-    let Some((part, offset)) = snapshot.file_position(&at.text_document.uri, at.position) else {
+    let Some((_, position)) = snapshot.analysis_position(&at.text_document.uri, at.position) else {
         return Ok(None);
-    };
-    let position = FilePosition {
-        file: part.file,
-        offset,
     };
     Ok(
         signature_help(&snapshot.db, position, &SignatureHelpConfig::default()).map(|help| {
