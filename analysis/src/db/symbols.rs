@@ -47,6 +47,17 @@ pub struct MacroParam {
     pub optional: bool,
 }
 
+impl MacroParam {
+    /// How hover and signature help show the parameter: `optional R` or `R`.
+    pub fn label(&self) -> String {
+        if self.optional {
+            format!("optional {}", self.name)
+        } else {
+            self.name.clone()
+        }
+    }
+}
+
 /// The kind of a declared value, as far as the text tells it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum ValueKind {

@@ -6,7 +6,7 @@
 use super::classify::{Target, classify};
 use super::keyword_docs::keyword_doc;
 use super::{FilePosition, NavigationTarget};
-use crate::db::{self, Db, Definition, FilePath, Resolved, SymbolKind};
+use crate::db::{self, Db, Definition, FilePath, MacroParam, Resolved, SymbolKind};
 use std::fmt::Write;
 use syntax::TextRange;
 
@@ -83,16 +83,7 @@ fn symbol_markup(
             code(config, &format!("{declaration} // {value}"))
         }
         SymbolKind::Macro { params } => {
-            let params: Vec<String> = params
-                .iter()
-                .map(|p| {
-                    if p.optional {
-                        format!("optional {}", p.name)
-                    } else {
-                        p.name.clone()
-                    }
-                })
-                .collect();
+            let params: Vec<String> = params.iter().map(MacroParam::label).collect();
             code(
                 config,
                 &format!("#macro {}({})", symbol.name, params.join(", ")),

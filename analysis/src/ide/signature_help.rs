@@ -4,7 +4,7 @@
 
 use super::FilePosition;
 use super::keyword_docs::keyword_doc;
-use crate::db::{self, Db, SymbolKind};
+use crate::db::{self, Db, MacroParam, SymbolKind};
 use syntax::SyntaxKind::*;
 use syntax::SyntaxToken;
 
@@ -71,16 +71,7 @@ pub fn signature_help(
         let SymbolKind::Macro { params } = &symbol.kind else {
             return None;
         };
-        let parameters: Vec<String> = params
-            .iter()
-            .map(|p| {
-                if p.optional {
-                    format!("optional {}", p.name)
-                } else {
-                    p.name.clone()
-                }
-            })
-            .collect();
+        let parameters: Vec<String> = params.iter().map(MacroParam::label).collect();
         let label = format!("{}({})", symbol.name, parameters.join(", "));
         (label, parameters, symbol.doc.clone())
     } else {
