@@ -44,5 +44,8 @@ pub fn check_with(
 
 /// The syntax errors of one file's text, as diagnostics located in `name`.
 pub fn syntax_errors(name: &str, text: &str) -> Vec<syntax::Diagnostic> {
-    syntax::syntax_diagnostics(name, &syntax::parse(text))
+    syntax::syntax_errors(text)
+        .into_iter()
+        .map(|error| syntax::Diagnostic::error(name, error.range, error.message))
+        .collect()
 }

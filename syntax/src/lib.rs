@@ -17,7 +17,7 @@ mod tests;
 
 pub use diagnostic::{Diagnostic, Related, Severity, SourceResolver, Span};
 pub use kind::{KEYWORDS, SyntaxKind};
-pub use parsing::{Parse, SyntaxError, parse};
+pub use parsing::{Parse, SyntaxError, parse, syntax_errors};
 pub use rowan::{TextRange, TextSize};
 pub use syntax_tree::{PovLanguage, SyntaxElement, SyntaxNode, SyntaxToken};
 

@@ -41,6 +41,12 @@ fn parser_golden_files() {
                 "{} does not round-trip",
                 file.display()
             );
+            assert_eq!(
+                crate::syntax_errors(&text),
+                parse.errors(),
+                "{}: the errors without a tree differ from the parse's",
+                file.display()
+            );
             let has_errors = !parse.errors().is_empty();
             assert_eq!(
                 has_errors,

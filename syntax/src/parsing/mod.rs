@@ -84,6 +84,20 @@ impl Parse {
 /// Parses SDL text. Never fails: problems are reported in [`Parse::errors`] and the tree
 /// still holds every byte of `text`.
 pub fn parse(text: &str) -> Parse {
+    let (tokens, events, errors) = run_grammar(text);
+    let green = build_tree(text, &tokens, events);
+    Parse { green, errors }
+}
+
+/// The errors [`parse`] reports, without building the tree: for a front end that only
+/// needs to know that a file is well formed before it runs the file's tokens.
+pub fn syntax_errors(text: &str) -> Vec<SyntaxError> {
+    run_grammar(text).2
+}
+
+/// Lexes `text` and runs the grammar over it: every token, the grammar's events and all
+/// the errors, in text order.
+fn run_grammar(text: &str) -> (Vec<Token>, Vec<Event>, Vec<SyntaxError>) {
     let lexed = lex(text);
     let significant: Vec<&Token> = lexed
         .tokens
@@ -107,7 +121,6 @@ pub fn parse(text: &str) -> Parse {
         ..
     } = p;
 
-    let green = build_tree(text, &lexed.tokens, events);
     let mut errors: Vec<SyntaxError> = lexed
         .errors
         .into_iter()
@@ -119,7 +132,7 @@ pub fn parse(text: &str) -> Parse {
         .chain(parse_errors)
         .collect();
     errors.sort_by_key(|e| (e.range.start(), e.range.end()));
-    Parse { green, errors }
+    (lexed.tokens, events, errors)
 }
 
 /// Directives that do not pair up: a group without `#end`, an `#else` or `#end` that
