@@ -3,10 +3,10 @@
 
 use super::expr::EPSILON;
 use super::stream::SkipStop;
+use super::symbols::Scope;
 use super::tokens::{Cond, Frame, FrameKind, Token};
 use super::value::{Array, Value};
 use super::{Evaluator, Message, Result, Stream};
-use std::collections::HashMap;
 use std::rc::Rc;
 use syntax::SyntaxKind::*;
 
@@ -176,18 +176,22 @@ impl Evaluator<'_> {
                 }
             }
         }
-        if local
-            && indices.is_empty()
-            && key.is_none()
-            && !self.scopes.last().is_some_and(|s| s.contains_key(&text))
-        {
+        // The value may end inside a macro it calls (`#local A = M()` where M's body ends
+        // in an expression), whose scope is still open when the value is assigned: the
+        // scope and frame depth of the directive itself are the ones that count.
+        let scope = self.scopes.len() - 1;
+        let depth = self.frames.len();
+        if local && indices.is_empty() && key.is_none() && !self.scopes[scope].contains_key(&text) {
             // POV-Ray creates a #local before reading its value, so the value cannot use an
             // outer identifier of the same name.
-            self.declare_local(&text, Value::Uninitialized);
+            self.declare_local_in(scope, &text, Value::Uninitialized);
         }
-        let first = self.guarded(Self::next)?;
+        let first = self.guarded_at(depth, Self::next)?;
         self.unget(first.clone());
-        let value = self.rvalue()?;
+        let value = self.rvalue_from(depth)?;
+        // Looking past the value may also have left the scope of the directive (a texture
+        // ending a macro body is followed by its #end); then the scope read on to counts.
+        let scope = scope.min(self.scopes.len() - 1);
         let needs_semicolon = value.is_numeric();
         if !indices.is_empty() {
             self.assign_element(&name, &text, &indices, value)?;
@@ -195,11 +199,9 @@ impl Evaluator<'_> {
             self.assign_key(&name, &text, key, value)?;
         } else {
             let existing = if local {
-                self.scopes
-                    .last()
-                    .and_then(|scope| scope.get(&text).cloned())
+                self.scopes[scope].get(&text).cloned()
             } else {
-                self.lookup(&text)
+                self.lookup_in(scope, &text)
             };
             if let (Some(slot), Value::Function(_)) = (existing, &value)
                 && matches!(&*slot.borrow(), Value::Function(_))
@@ -212,9 +214,9 @@ impl Evaluator<'_> {
                 ));
             }
             if local {
-                self.declare_local(&text, value);
+                self.declare_local_in(scope, &text, value);
             } else {
-                self.declare(&text, value);
+                self.declare_in(scope, &text, value);
             }
         }
         // A '#' given back here is a held-back #declare: the ';' is missing, and that
@@ -298,9 +300,15 @@ impl Evaluator<'_> {
 
     /// The right-hand side of a declaration or a macro argument: a value of any type.
     pub fn rvalue(&mut self) -> Result<Value> {
+        self.rvalue_from(self.frames.len())
+    }
+
+    /// A value that began at frame depth `depth`: a macro its first token called may have
+    /// returned since, and one called later must still run in full.
+    fn rvalue_from(&mut self, depth: usize) -> Result<Value> {
         // Reading an array identifier looks at the token after it (for a subscript), which
         // must not run a following #declare early.
-        let token = self.guarded(Self::next)?;
+        let token = self.guarded_at(depth, Self::next)?;
         let kind = token.kind;
         self.unget(token.clone());
         if Self::starts_object(kind) {
@@ -312,9 +320,11 @@ impl Evaluator<'_> {
             TEXTURE_KW => {
                 self.next()?;
                 let mut texture = self.texture_body()?;
-                // More texture blocks after the first make a layered texture.
+                // More texture blocks after the first make a layered texture. A macro call
+                // after the last one runs after the texture is assigned, as in POV-Ray
+                // (`#declare T = texture {...}` then `Screen_Plane(T, ...)`).
                 loop {
-                    let next = self.guarded(Self::next)?;
+                    let next = self.guarded_at(depth, Self::next_unexpanded)?;
                     if next.kind != TEXTURE_KW {
                         self.unget(next);
                         break;
@@ -410,7 +420,7 @@ impl Evaluator<'_> {
             _ => {
                 // An expression is only known to end when the token after it is read; a
                 // `#declare` there must wait until this value is assigned.
-                self.guarded(Self::expression)
+                self.guarded_at(depth, Self::expression)
             }
         }
     }
@@ -418,7 +428,16 @@ impl Evaluator<'_> {
     /// Runs `read`, which may look at the token after a declaration's value, holding back
     /// any `#declare` it meets until the value is assigned.
     fn guarded<T>(&mut self, read: impl FnOnce(&mut Self) -> Result<T>) -> Result<T> {
-        self.declaring.push(self.frames.len());
+        self.guarded_at(self.frames.len(), read)
+    }
+
+    /// `guarded` for a value that began at frame depth `depth`.
+    fn guarded_at<T>(
+        &mut self,
+        depth: usize,
+        read: impl FnOnce(&mut Self) -> Result<T>,
+    ) -> Result<T> {
+        self.declaring.push(depth);
         let result = read(self);
         self.declaring.pop();
         result
@@ -884,7 +903,7 @@ impl Evaluator<'_> {
         self.syntax_check(file)?;
         let end = self.files[file as usize].tokens.len();
         self.include_stack.push(file);
-        self.scopes.push(HashMap::new());
+        self.scopes.push(Scope::default());
         self.push_frame(Frame {
             file,
             pos: 0,

@@ -2,10 +2,10 @@
 //! binds them in a new scope (an identifier argument by reference, anything else by
 //! value), and continues reading from the macro body.
 
+use super::symbols::Scope;
 use super::tokens::{FileId, Frame, FrameKind, Token};
 use super::value::Value;
 use super::{Evaluator, Result};
-use std::collections::HashMap;
 use std::rc::Rc;
 use syntax::Span;
 use syntax::SyntaxKind::*;
@@ -185,7 +185,7 @@ impl Evaluator<'_> {
             });
             return Err(error);
         }
-        self.scopes.push(HashMap::new());
+        self.scopes.push(Scope::default());
         for (param, arg) in def.params.iter().zip(args) {
             match arg {
                 Argument::ByValue(value) => self.declare_local(&param.name, value),
@@ -217,9 +217,8 @@ impl Evaluator<'_> {
                 .last()
                 .expect("the main frame is never popped")
                 .file;
-            let name =
-                self.files[file as usize].text[ident.start as usize..ident.end as usize].to_owned();
-            if let Some(slot) = self.lookup(&name)
+            let name = &self.files[file as usize].text[ident.start as usize..ident.end as usize];
+            if let Some(slot) = self.lookup(name)
                 && !matches!(&*slot.borrow(), Value::Macro(_))
             {
                 self.next_raw()?;

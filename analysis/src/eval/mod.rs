@@ -46,9 +46,9 @@ use crate::scene::{Camera, GlobalSettings, Light, Object, Scene, Texture};
 use crate::stdinc;
 use std::collections::HashMap;
 use std::sync::Arc;
+use symbols::Scope;
 use syntax::{Diagnostic, TextRange};
 use tokens::{FileId, Frame, FrameKind, SourceFile, Token};
-use value::Slot;
 
 /// Every evaluation error stops the evaluation; boxed to keep results small.
 pub(crate) type Result<T> = std::result::Result<T, Box<Diagnostic>>;
@@ -203,11 +203,13 @@ pub(crate) struct Evaluator<'a> {
     sources: Sources,
     frames: Vec<Frame>,
     /// Symbol tables: the global one first, then one per include file and macro call.
-    scopes: Vec<HashMap<String, Slot>>,
+    scopes: Vec<Scope>,
     /// Tokens given back by the parsers, read again before the stream.
     pushed: Vec<Token>,
     /// The frame depths at which a declaration's value is being read, innermost last.
     declaring: Vec<usize>,
+    /// Whether `next` hands macro calls back unexpanded (see `next_unexpanded`).
+    macro_calls_held: bool,
     /// Files written with `#write`, by name.
     written: std::collections::BTreeMap<String, String>,
     /// Files being included, innermost last, to catch cycles.
@@ -250,9 +252,10 @@ impl<'a> Evaluator<'a> {
             file_ids: HashMap::new(),
             sources: Sources::default(),
             frames: Vec::new(),
-            scopes: vec![HashMap::new()],
+            scopes: vec![Scope::default()],
             pushed: Vec::new(),
             declaring: Vec::new(),
+            macro_calls_held: false,
             include_stack: Vec::new(),
             images: HashMap::new(),
             written: std::collections::BTreeMap::new(),

@@ -32,7 +32,14 @@ impl Evaluator<'_> {
                         Some(keyword) => keyword,
                         None => self.next_raw()?,
                     };
-                    self.directive(token, keyword)?;
+                    self.run_directive(token, keyword)?;
+                    continue;
+                }
+                // So does a macro call held back by `next_unexpanded`.
+                if !self.macro_calls_held
+                    && let Some(def) = macro_of(&token)
+                {
+                    self.invoke_macro(def, &token)?;
                     continue;
                 }
                 return Ok(token);
@@ -48,26 +55,43 @@ impl Evaluator<'_> {
                         self.pushed.push(keyword);
                         return Ok(raw);
                     }
-                    self.directive(raw, keyword)?;
+                    self.run_directive(raw, keyword)?;
                 }
                 IDENT => {
-                    let name = self.text(&raw).to_owned();
-                    let slot = self.lookup(&name);
-                    if let Some(slot) = &slot {
-                        let value = slot.borrow();
-                        if let Value::Macro(def) = &*value {
-                            let def = def.clone();
-                            drop(value);
-                            self.invoke_macro(def, &raw)?;
-                            continue;
-                        }
-                    }
+                    let slot = self.lookup(self.text(&raw));
                     let token = Token { slot, ..raw };
+                    if let Some(def) = macro_of(&token) {
+                        if self.macro_calls_held {
+                            return Ok(token);
+                        }
+                        self.invoke_macro(def, &token)?;
+                        continue;
+                    }
                     return self.resolve_element(token);
                 }
                 _ => return Ok(raw),
             }
         }
+    }
+
+    /// The next token as `next` reads it, except that a macro call is handed back
+    /// unexpanded (its token's slot holds the macro) and runs when `next` reads the token
+    /// again: for looking past the end of a value that is not assigned yet, which a macro
+    /// there may use.
+    pub fn next_unexpanded(&mut self) -> Result<Token> {
+        self.macro_calls_held = true;
+        let token = self.next();
+        self.macro_calls_held = false;
+        token
+    }
+
+    /// Runs a directive met by `next`; macro calls inside it (`#if (M())`) are not part of
+    /// any lookahead and expand.
+    fn run_directive(&mut self, hash: Token, keyword: Token) -> Result<()> {
+        let held = std::mem::replace(&mut self.macro_calls_held, false);
+        let result = self.directive(hash, keyword);
+        self.macro_calls_held = held;
+        result
     }
 
     /// Whether a declaration's value is being read and the reader has got past its end:
@@ -330,5 +354,13 @@ impl Evaluator<'_> {
             .last()
             .expect("the main frame is never popped")
             .pos
+    }
+}
+
+/// The macro a token names, if its identifier holds one.
+fn macro_of(token: &Token) -> Option<std::rc::Rc<super::macros::MacroDef>> {
+    match &*token.slot.as_ref()?.borrow() {
+        Value::Macro(def) => Some(def.clone()),
+        _ => None,
     }
 }

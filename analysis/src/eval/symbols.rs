@@ -7,10 +7,20 @@ use super::value::{Slot, Value};
 use std::cell::RefCell;
 use std::rc::Rc;
 
+/// One symbol table. Identifiers are looked up on nearly every token a scene runs, so the
+/// table hashes with the fast non-cryptographic FxHash rather than SipHash: the keys are the
+/// scene's own names, not input an attacker could shape into collisions that matter.
+pub type Scope = std::collections::HashMap<String, Slot, rustc_hash::FxBuildHasher>;
+
 impl Evaluator<'_> {
     /// The storage of the most local definition of `name`.
     pub fn lookup(&self, name: &str) -> Option<Slot> {
-        self.scopes
+        self.lookup_in(self.scopes.len() - 1, name)
+    }
+
+    /// The storage of the most local definition of `name` in scope `scope` or an outer one.
+    pub fn lookup_in(&self, scope: usize, name: &str) -> Option<Slot> {
+        self.scopes[..=scope]
             .iter()
             .rev()
             .find_map(|scope| scope.get(name).cloned())
@@ -18,7 +28,12 @@ impl Evaluator<'_> {
 
     /// `#declare name = value`.
     pub fn declare(&mut self, name: &str, value: Value) {
-        if let Some(slot) = self.lookup(name) {
+        self.declare_in(self.scopes.len() - 1, name, value);
+    }
+
+    /// `#declare name = value` as seen from scope `scope`.
+    pub fn declare_in(&mut self, scope: usize, name: &str, value: Value) {
+        if let Some(slot) = self.lookup_in(scope, name) {
             *slot.borrow_mut() = value;
         } else {
             self.scopes[0].insert(name.to_owned(), Rc::new(RefCell::new(value)));
@@ -28,14 +43,15 @@ impl Evaluator<'_> {
     /// `#local name = value`. An existing local definition keeps its storage, so that a
     /// macro parameter passed by reference still writes through to the caller.
     pub fn declare_local(&mut self, name: &str, value: Value) {
-        let scope = self
-            .scopes
-            .last_mut()
-            .expect("there is always a global scope");
-        match scope.get(name) {
+        self.declare_local_in(self.scopes.len() - 1, name, value);
+    }
+
+    /// `#local name = value` in scope `scope`.
+    pub fn declare_local_in(&mut self, scope: usize, name: &str, value: Value) {
+        match self.scopes[scope].get(name) {
             Some(slot) => *slot.borrow_mut() = value,
             None => {
-                scope.insert(name.to_owned(), Rc::new(RefCell::new(value)));
+                self.scopes[scope].insert(name.to_owned(), Rc::new(RefCell::new(value)));
             }
         }
     }

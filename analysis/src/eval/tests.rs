@@ -425,3 +425,57 @@ fn a_light_identifier_is_an_object() {
 fn quick_color_follows_a_pattern() {
     evaluate_ok("sphere { 0, 1 pigment { checker rgb 1 rgb 0 quick_color rgb 0.5 scale 2 } }");
 }
+
+#[test]
+fn a_macro_call_after_a_texture_declaration_runs_once_the_texture_is_declared() {
+    // The declaration looks past the texture for another layer; screen.inc's Screen_Plane
+    // is called right after the texture it is given, as in incdemo/screen.pov.
+    check_debug(
+        r#"#declare T = texture { pigment { rgb 1 } }
+#macro Show(Tex) #local Copy = texture { Tex } #debug "shown\n" #end
+Show(T)
+#declare L = texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } }
+Show(L)
+"#,
+        expect![[r#"
+            shown
+            shown
+        "#]],
+    );
+}
+
+#[test]
+fn macros_called_one_after_another_in_a_declaration_run_their_own_directives() {
+    // shapes.inc's HF macros subtract two calls of a macro whose body starts with #local.
+    check_debug(
+        r#"#macro Half(K) #local H = K / 2; H #end
+#declare A = Half(8) - Half(2);
+#debug concat(str(A, 0, 1), "\n")
+"#,
+        expect![[r#"
+            3.0
+        "#]],
+    );
+}
+
+#[test]
+fn a_local_takes_the_value_a_macro_leaves_before_its_end() {
+    // tracevines.pov: FindTmp's body ends in `Q;`, so the #local in Grow is assigned while
+    // FindTmp's scope is still open; it must land in Grow's scope all the same.
+    check_debug(
+        r#"#macro Find(P) #local Q = P + 1; Q; #end
+#macro Grow(P)
+  #local Found = Find(P)
+  #local Again = Find(Found)
+  #debug concat(str(Found, 0, 0), " ", str(Again, 0, 0), "\n")
+#end
+Grow(4)
+#declare G = Find(1)
+#debug concat(str(G, 0, 0), "\n")
+"#,
+        expect![[r#"
+            5 6
+            2
+        "#]],
+    );
+}
