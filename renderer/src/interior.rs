@@ -4,6 +4,7 @@
 
 use crate::media::Medium;
 use analysis::scene::{self, Colour};
+use glam::DVec3;
 
 #[derive(Debug, Clone)]
 pub struct Interior {
@@ -48,6 +49,13 @@ impl Interior {
             hollow,
             media,
         })
+    }
+
+    /// The share of light the media of this interior let through from `a` to `b`.
+    pub fn media_transmittance(&self, a: DVec3, b: DVec3) -> DVec3 {
+        self.media
+            .iter()
+            .fold(DVec3::ONE, |t, m| t * m.transmittance(a, b))
     }
 }
 

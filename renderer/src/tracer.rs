@@ -575,7 +575,7 @@ impl<'w> Tracer<'w> {
             let Some(hit) = self.world.bvh.occluder(&q, &mut self.scratch) else {
                 let end = origin + direction * remaining;
                 for interior in &inside {
-                    colour *= participating::media_transmittance(interior, origin, end);
+                    colour *= interior.media_transmittance(origin, end);
                 }
                 return colour;
             };
@@ -595,7 +595,7 @@ impl<'w> Tracer<'w> {
             match inside.iter().position(|i| std::ptr::eq(*i, interior)) {
                 Some(at) => {
                     colour *= fade(interior, hit.t);
-                    colour *= participating::media_transmittance(interior, origin, point);
+                    colour *= interior.media_transmittance(origin, point);
                     inside.remove(at);
                 }
                 None => inside.push(interior),

@@ -314,6 +314,32 @@ mod tests {
         assert_eq!(format!("{:?}", a.tree), format!("{:?}", b.tree));
     }
 
+    /// The caustic's light under the lens: the photons' colour gathered on the floor below.
+    fn caustic_colour(interior: &str) -> glam::DVec3 {
+        let scene = lens(
+            "photons { spacing 0.02 }",
+            &format!("hollow interior {{ ior 1.5 {interior} }} photons {{ target refraction on }}"),
+        );
+        let world = build(&scene, 9).unwrap();
+        let map = world.photons.as_ref().unwrap();
+        let (mut scratch, mut lights) = (super::GatherScratch::default(), Vec::new());
+        map.lights_at(-glam::DVec3::Y, glam::DVec3::Y, &mut scratch, &mut lights);
+        lights.iter().map(|(colour, _)| *colour).sum()
+    }
+
+    #[test]
+    fn media_dim_the_photons_that_cross_them() {
+        let clear = caustic_colour("");
+        let tinted = caustic_colour("media { absorption <0, 1, 2> }");
+        assert!(clear.min_element() > 0.0, "{clear}");
+        // Through about a diameter (1) of the medium: red untouched, green and blue
+        // dimmed to about e^-1 and e^-2.
+        let ratio = tinted / clear;
+        assert!((ratio.x - 1.0).abs() < 0.02, "{ratio}");
+        assert!(ratio.y > 0.25 && ratio.y < 0.5, "{ratio}");
+        assert!(ratio.z > 0.08 && ratio.z < 0.2, "{ratio}");
+    }
+
     #[test]
     fn what_is_not_drawn_is_a_located_error() {
         let plane = "global_settings { photons { spacing 0.1 } }

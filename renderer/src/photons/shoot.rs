@@ -10,7 +10,10 @@
 //! Photons travel through `pass_through` objects untouched until they meet a target;
 //! they are reflected and refracted by surfaces that reflect or refract photons (with the
 //! surface's reflection colour, or its filter and transmit, as the tracer's rays are), and
-//! split into the bands of the spectrum by dispersing interiors. Once a photon has been
+//! split into the bands of the spectrum by dispersing interiors. The media of the
+//! interiors they cross dim them; atmospheric media do not (POV-Ray 3.7's caustics are the
+//! same with and without the light's `media_attenuation`, and no dimmer than the camera's
+//! view through the atmosphere makes them). Once a photon has been
 //! reflected or refracted, every collecting surface it meets keeps it. A photon carries
 //! the light of its share of the spiral: the light's colour times the solid angle between
 //! neighbours times the square of the distance it has travelled (POV-Ray's lights do not
@@ -341,6 +344,10 @@ impl<'w> Shooter<'w, '_> {
         if inside.is_innermost(&leaf.interior) {
             let depth = point.distance(ray.origin);
             power *= crate::tracer::fade(&leaf.interior, depth);
+        }
+        // The media of the interiors the photon crosses dim it, as they dim shadow rays.
+        for interior in inside.interiors() {
+            power *= interior.media_transmittance(ray.origin, point);
         }
         if travel.caustic && leaf.photons.collect() {
             self.store(point, power, ray.direction, travel.path)?;

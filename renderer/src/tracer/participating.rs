@@ -132,14 +132,6 @@ impl<'w> Tracer<'w> {
     }
 }
 
-/// The share of light the media of `interior` let through from `a` to `b`.
-pub(super) fn media_transmittance(interior: &Interior, a: DVec3, b: DVec3) -> DVec3 {
-    interior
-        .media
-        .iter()
-        .fold(DVec3::ONE, |t, m| t * m.transmittance(a, b))
-}
-
 #[cfg(test)]
 mod tests {
     use crate::build::world_of_source as world;
