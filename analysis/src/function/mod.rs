@@ -154,11 +154,7 @@ impl Function {
     /// directly or through the functions it calls, as "not supported yet" names it.
     pub fn unsupported(&self) -> Option<String> {
         match &self.body {
-            Body::Code(code) => code.iter().find_map(|op| match op {
-                Op::Call(f, _) | Op::CallPart(f, _, _) => f.unsupported(),
-                Op::Sum { body, .. } => Function::code(Vec::new(), body.to_vec()).unsupported(),
-                _ => None,
-            }),
+            Body::Code(code) => unsupported_in(code),
             Body::Pattern(p) => pattern::check(p).err(),
             Body::Pigment(p) => pattern::check_pigment(p).err(),
             Body::Spline(_) | Body::Transform(_) => None,
@@ -198,6 +194,16 @@ impl Function {
             }
         }
     }
+}
+
+/// What a function's code calls that cannot be evaluated yet, looking into `sum`/`prod`
+/// bodies without copying them.
+fn unsupported_in(code: &[Op]) -> Option<String> {
+    code.iter().find_map(|op| match op {
+        Op::Call(f, _) | Op::CallPart(f, _, _) => f.unsupported(),
+        Op::Sum { body, .. } => unsupported_in(body),
+        _ => None,
+    })
 }
 
 /// Runs compiled code; `args` must have one value per parameter.
