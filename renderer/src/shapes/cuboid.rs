@@ -1,6 +1,6 @@
 //! `box { corner1, corner2 }`: an axis-aligned box in its own frame.
 
-use super::Roots;
+use super::{Root, Roots};
 use crate::ray::Ray;
 use glam::DVec3;
 
@@ -20,6 +20,22 @@ impl Cuboid {
 
     /// Parts are faces: `2 * axis` for the low side, `2 * axis + 1` for the high side.
     pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
+        if let Some((near, far)) = self.crossings(ray) {
+            roots.push(near.t, near.part);
+            roots.push(far.t, far.part);
+        }
+    }
+
+    /// The nearer crossing in `(tmin, tmax)`, without a list of crossings around it.
+    pub fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<Root> {
+        let (near, far) = self.crossings(ray)?;
+        [near, far]
+            .into_iter()
+            .find(|r| r.t.is_finite() && r.t > tmin && r.t < tmax)
+    }
+
+    /// Where the ray enters and leaves the box, with the faces it crosses.
+    fn crossings(&self, ray: &Ray) -> Option<(Root, Root)> {
         let mut near = f64::NEG_INFINITY;
         let mut far = f64::INFINITY;
         let mut near_part = 0;
@@ -30,7 +46,7 @@ impl Cuboid {
             let (lo, hi) = (self.min[axis], self.max[axis]);
             if d == 0.0 {
                 if o < lo || o > hi {
-                    return;
+                    return None;
                 }
                 continue;
             }
@@ -49,10 +65,16 @@ impl Cuboid {
                 far_part = p2;
             }
         }
-        if near <= far {
-            roots.push(near, near_part);
-            roots.push(far, far_part);
-        }
+        (near <= far).then_some((
+            Root {
+                t: near,
+                part: near_part,
+            },
+            Root {
+                t: far,
+                part: far_part,
+            },
+        ))
     }
 
     pub fn inside(&self, p: DVec3) -> bool {

@@ -111,6 +111,14 @@ impl Default for Roots {
     }
 }
 
+/// The first of `ts`, given in increasing order, that is a finite parameter inside
+/// `(tmin, tmax)`: the crossing [`Roots`] would keep and a nearest-hit search would take.
+fn nearest_in(ts: &[f64], tmin: f64, tmax: f64) -> Option<f64> {
+    ts.iter()
+        .copied()
+        .find(|&t| t.is_finite() && t > tmin && t < tmax)
+}
+
 /// A shape that finds its crossings nearest first and can stop at any of them (a blob, a
 /// superellipsoid): every crossing for CSG, or the nearest in an interval for the rest.
 pub(crate) trait OrderedCrossings {
@@ -179,6 +187,9 @@ impl Shape {
     /// instead of finding every crossing.
     pub fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<Root> {
         match self {
+            Shape::Sphere(s) => return s.first_hit(ray, tmin, tmax),
+            Shape::Plane(s) => return s.first_hit(ray, tmin, tmax),
+            Shape::Cuboid(s) => return s.first_hit(ray, tmin, tmax),
             Shape::Math(s) => return s.first_hit(ray, tmin, tmax),
             Shape::Mesh(s) => return s.first_hit(ray, tmin, tmax),
             _ => {}

@@ -1,6 +1,6 @@
 //! `plane { normal, distance }`: the half-space below `normal · p = distance` is inside.
 
-use super::Roots;
+use super::{Root, Roots};
 use crate::bounds::Aabb;
 use crate::ray::Ray;
 use glam::DVec3;
@@ -14,10 +14,19 @@ pub struct Plane {
 
 impl Plane {
     pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
-        let denom = self.normal.dot(ray.direction);
-        if denom != 0.0 {
-            roots.push((self.distance - self.normal.dot(ray.origin)) / denom, 0);
+        if let Some(t) = self.crossing(ray) {
+            roots.push(t, 0);
         }
+    }
+
+    /// The crossing in `(tmin, tmax)`, without a list of crossings around it.
+    pub fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<Root> {
+        super::nearest_in(&[self.crossing(ray)?], tmin, tmax).map(|t| Root { t, part: 0 })
+    }
+
+    fn crossing(&self, ray: &Ray) -> Option<f64> {
+        let denom = self.normal.dot(ray.direction);
+        (denom != 0.0).then(|| (self.distance - self.normal.dot(ray.origin)) / denom)
     }
 
     pub fn inside(&self, p: DVec3) -> bool {
