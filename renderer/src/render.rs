@@ -231,10 +231,10 @@ fn method2(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
         (0..region.columns())
             .map(|col| {
                 let c = [
-                    corners[row][col],
-                    corners[row][col + 1],
-                    corners[row + 1][col],
-                    corners[row + 1][col + 1],
+                    &corners[row][col],
+                    &corners[row][col + 1],
+                    &corners[row + 1][col],
+                    &corners[row + 1][col + 1],
                 ];
                 let x = region.x0 + col as u32;
                 let y = region.y0 + row as u32;

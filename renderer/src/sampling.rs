@@ -149,18 +149,23 @@ impl Subdivider {
         tracer: &mut Tracer<'_>,
         x: u32,
         y: u32,
-        corners: [Compared; 4],
+        corners: [&Compared; 4],
     ) -> Sample {
+        // Most pixels are not split: their corners are averaged where they lie, without
+        // being copied into the grid first.
+        if sampler.depth <= 1 || !differ_at_corners(corners, sampler.threshold) {
+            return mean_of_corners(corners);
+        }
         self.generation = self.generation.wrapping_add(1);
         if self.generation == 0 {
             self.stamp.fill(0);
             self.generation = 1;
         }
         let last = self.side - 1;
-        self.set(0, 0, corners[0]);
-        self.set(last, 0, corners[1]);
-        self.set(0, last, corners[2]);
-        self.set(last, last, corners[3]);
+        self.set(0, 0, *corners[0]);
+        self.set(last, 0, *corners[1]);
+        self.set(0, last, *corners[2]);
+        self.set(last, last, *corners[3]);
         // POV-Ray divides the jitter amount by 2^depth + 1.
         let scale = sampler.jitter / f64::from((1u32 << sampler.depth) + 1);
         self.square(
@@ -180,8 +185,8 @@ impl Subdivider {
         self.stamp[i] = self.generation;
     }
 
-    fn get(&self, bx: usize, by: usize) -> Compared {
-        self.grid[by * self.side + bx]
+    fn get(&self, bx: usize, by: usize) -> &Compared {
+        &self.grid[by * self.side + bx]
     }
 
     /// The mean over the square with top-left grid point `(bx, by)` and `step` points
@@ -203,13 +208,9 @@ impl Subdivider {
             self.get(bx, by + step),
             self.get(bx + step, by + step),
         ];
-        let split = level > 0
-            && step >= 2
-            && (0..4).any(|i| {
-                (i + 1..4).any(|j| c[i].encoded.distance(c[j].encoded) >= sampler.threshold)
-            });
+        let split = level > 0 && step >= 2 && differ_at_corners(c, sampler.threshold);
         if !split {
-            return (c[0].sample + c[1].sample + c[2].sample + c[3].sample) * 0.25;
+            return mean_of_corners(c);
         }
         let half = step / 2;
         let unit = 1.0 / (self.side - 1) as f64;
@@ -239,6 +240,16 @@ impl Subdivider {
         }
         sum * 0.25
     }
+}
+
+/// Whether some two of a square's corners differ by the threshold or more.
+fn differ_at_corners(c: [&Compared; 4], threshold: f64) -> bool {
+    (0..4).any(|i| (i + 1..4).any(|j| c[i].encoded.distance(c[j].encoded) >= threshold))
+}
+
+/// The mean of a square's corner samples.
+fn mean_of_corners(c: [&Compared; 4]) -> Sample {
+    (c[0].sample + c[1].sample + c[2].sample + c[3].sample) * 0.25
 }
 
 /// Method 1: supersamples on a `depth` × `depth` grid, averaged with the centre sample.
