@@ -196,14 +196,25 @@ impl<'w> Tracer<'w> {
     pub(crate) fn shade(&mut self, ray: &Ray, hit: &Hit<'w>, level: u32, weight: f64) -> Sample {
         let p = ray.at(hit.t);
         let leaf: &'w Leaf = hit.leaf;
+        // A texture map shades each texture it blends and mixes the results.
+        let at = leaf.texture_point(p, hit.part);
+        let mut total = Sample::default();
+        if !self.world.quality.lighting {
+            // Quality levels 0 and 1 show the top pigment under full ambient light: no
+            // normal, no light is needed.
+            leaf.for_each_layers(&at, hit.part, &mut |w, layers| {
+                let top = layers
+                    .first()
+                    .map_or(DVec3::ZERO, |l| l.pigment.colour_at(&at).rgb);
+                total = total + Sample::new(top, 0.0) * w;
+            });
+            return total;
+        }
         let mut normal = leaf.normal(p, hit.part);
         // POV-Ray lights the side the ray sees.
         if normal.dot(ray.direction) > 0.0 {
             normal = -normal;
         }
-        // A texture map shades each texture it blends and mixes the results.
-        let at = leaf.texture_point(p, hit.part);
-        let mut total = Sample::default();
         leaf.for_each_layers(&at, hit.part, &mut |w, layers| {
             let s = self.shade_layers(ray, &at, normal, hit, layers, level, weight * w);
             total = total + s * w;
@@ -228,12 +239,6 @@ impl<'w> Tracer<'w> {
         let world = self.world;
         let leaf: &'w Leaf = hit.leaf;
         let p = at.world;
-        if !world.quality.lighting {
-            let top = layers
-                .first()
-                .map_or(DVec3::ZERO, |l| l.pigment.colour_at(at).rgb);
-            return Sample::new(top, 0.0);
-        }
         let relative_ior = self.inside.relative_ior(&leaf.interior);
         let mut indirect = crate::radiosity::Indirect::new(p, raw_normal, level);
         let mut colour = DVec3::ZERO;
@@ -552,26 +557,27 @@ impl<'w> Tracer<'w> {
         let mut colour = colour;
         let mut origin = p;
         let mut remaining = distance;
-        // The interiors the shadow ray is inside, for distance fading and media; it starts
-        // outside everything, as POV-Ray's shadow rays do, unless it leaves a media sample.
-        let mut inside: Vec<&'w Interior> = self.shadow_start.clone();
-        if let Some(blocker) = self.last_blocker {
-            let eps = self.tolerance(p);
-            let q = Query::new(Ray::new(p, direction), RayKind::Shadow, eps, distance - eps);
-            if blocker.blocks(&q) {
-                return DVec3::ZERO;
-            }
-        }
-        // Each transparent occluder filters the light and the search goes on beyond it;
-        // the bound stops a pathological stack of surfaces.
-        for _ in 0..64 {
-            let eps = self.tolerance(origin);
-            let q = Query::new(
+        let segment = |tracer: &Self, origin: DVec3, remaining: f64| {
+            let eps = tracer.tolerance(origin);
+            Query::new(
                 Ray::new(origin, direction),
                 RayKind::Shadow,
                 eps,
                 remaining - eps,
-            );
+            )
+        };
+        let mut q = segment(self, origin, remaining);
+        if let Some(blocker) = self.last_blocker
+            && blocker.blocks(&q)
+        {
+            return DVec3::ZERO;
+        }
+        // The interiors the shadow ray is inside, for distance fading and media; it starts
+        // outside everything, as POV-Ray's shadow rays do, unless it leaves a media sample.
+        let mut inside: Vec<&'w Interior> = self.shadow_start.clone();
+        // Each transparent occluder filters the light and the search goes on beyond it;
+        // the bound stops a pathological stack of surfaces.
+        for _ in 0..64 {
             let Some(hit) = self.world.bvh.occluder(&q, &mut self.scratch) else {
                 let end = origin + direction * remaining;
                 for interior in &inside {
@@ -605,6 +611,7 @@ impl<'w> Tracer<'w> {
             }
             origin = point;
             remaining -= hit.t;
+            q = segment(self, origin, remaining);
         }
         DVec3::ZERO
     }
