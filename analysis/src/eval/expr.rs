@@ -5,7 +5,7 @@
 use super::tokens::Token;
 use super::value::{Terms, Value};
 use super::{Evaluator, Result};
-use syntax::SyntaxKind::*;
+use syntax::SyntaxKind::{self, *};
 
 /// Comparison tolerance of `=` and `!=`, as POV-Ray's EPSILON.
 pub const EPSILON: f64 = 1.0e-10;
@@ -176,12 +176,20 @@ impl Evaluator<'_> {
         }
     }
 
+    /// Whether the token after an operand was given back and is none of `operators`: then
+    /// a precedence level's operator loop ends without taking the token out and putting it
+    /// back, as each level would otherwise do after every operand.
+    fn ends_before(&self, operators: &[SyntaxKind]) -> bool {
+        self.given_back_kind()
+            .is_some_and(|kind| !operators.contains(&kind))
+    }
+
     /// Inside parentheses: `C ? A : B`, logical and relational operators too.
     pub fn full_expression(&mut self) -> Result<Value> {
         let first = self.next()?;
         self.unget(first.clone());
         let condition = self.logical()?;
-        if self.eat(QUESTION)? {
+        if !self.ends_before(&[QUESTION]) && self.eat(QUESTION)? {
             let truth = is_true(self.to_float(&first, condition)?);
             let a = self.full_expression()?;
             self.expect(COLON, "':'")?;
@@ -194,6 +202,9 @@ impl Evaluator<'_> {
     fn logical(&mut self) -> Result<Value> {
         let mut left = self.relational()?;
         loop {
+            if self.ends_before(&[AMP, PIPE]) {
+                return Ok(left);
+            }
             let op = self.next()?;
             let bin = match op.kind {
                 AMP => BinOp::And,
@@ -211,6 +222,9 @@ impl Evaluator<'_> {
     fn relational(&mut self) -> Result<Value> {
         let mut left = self.additive()?;
         loop {
+            if self.ends_before(&[LT, LT_EQ, EQ, NEQ, GT_EQ, GT]) {
+                return Ok(left);
+            }
             let op = self.next()?;
             let bin = match op.kind {
                 LT => BinOp::Lt,
@@ -239,6 +253,9 @@ impl Evaluator<'_> {
     pub fn additive(&mut self) -> Result<Value> {
         let mut left = self.multiplicative()?;
         loop {
+            if self.ends_before(&[PLUS, MINUS]) {
+                return Ok(left);
+            }
             let op = self.next()?;
             let bin = match op.kind {
                 PLUS => BinOp::Add,
@@ -256,6 +273,9 @@ impl Evaluator<'_> {
     fn multiplicative(&mut self) -> Result<Value> {
         let mut left = self.unary()?;
         loop {
+            if self.ends_before(&[STAR, SLASH]) {
+                return Ok(left);
+            }
             let op = self.next()?;
             let bin = match op.kind {
                 STAR => BinOp::Mul,
@@ -358,6 +378,9 @@ impl Evaluator<'_> {
         self.unget(first.clone());
         let mut value = self.primary()?;
         loop {
+            if self.ends_before(&[DOT, L_BRACK]) {
+                return Ok(value);
+            }
             let token = self.next()?;
             match token.kind {
                 DOT => {

@@ -136,6 +136,14 @@ impl Evaluator<'_> {
         self.pushed.push(token);
     }
 
+    /// The kind of the token `next` would return, when that is a given-back token that
+    /// `next` returns as it is (not a held-back directive or macro call): a look at the
+    /// token after an operand that takes nothing out and puts nothing back.
+    pub fn given_back_kind(&self) -> Option<SyntaxKind> {
+        let token = self.pushed.last()?;
+        (!matches!(token.kind, HASH | IDENT)).then_some(token.kind)
+    }
+
     /// The kind of the next token, leaving it in place.
     pub fn peek_kind(&mut self) -> Result<SyntaxKind> {
         let token = self.next()?;
