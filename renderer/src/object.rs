@@ -270,6 +270,11 @@ pub enum CsgKind {
 
 impl Csg {
     pub fn new(kind: CsgKind, children: Vec<Object>) -> Csg {
+        let children = if kind == CsgKind::Intersection {
+            flatten_intersections(children)
+        } else {
+            children
+        };
         let surfaces = children
             .iter()
             .fold(Aabb::EMPTY, |b, o| b.union(&o.bounds()));
@@ -300,6 +305,22 @@ impl Csg {
             region,
         }
     }
+}
+
+/// The children of an intersection with those that are intersections themselves replaced
+/// by their own children, in order: the same surface, since a crossing of any part is kept
+/// where it lies inside all the others either way, but each crossing is tested once against
+/// the other parts instead of once per level (a difference of an intersection and a union
+/// becomes one intersection of the first's parts and the inverted union's).
+fn flatten_intersections(children: Vec<Object>) -> Vec<Object> {
+    let mut flat = Vec::with_capacity(children.len());
+    for child in children {
+        match child {
+            Object::Csg(csg) if csg.kind == CsgKind::Intersection => flat.extend(csg.children),
+            other => flat.push(other),
+        }
+    }
+    flat
 }
 
 /// A ray segment: the ray, its kind, and the open interval of parameters searched.
@@ -512,6 +533,36 @@ fn q_clip(bounds: Aabb, q: &Query) -> Option<(f64, f64)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_difference_of_an_intersection_and_a_union_is_one_intersection() {
+        let world = crate::build::world_of_source(
+            "difference {
+               intersection { box { -1, 1 } sphere { 0, 1.3 } }
+               union { cylinder { -2*x, 2*x, 0.4 } cylinder { -2*y, 2*y, 0.4 } }
+             }",
+        );
+        let Some(Object::Csg(csg)) = world.bvh.objects().next() else {
+            panic!("the difference is one CSG object");
+        };
+        assert_eq!(csg.kind, CsgKind::Intersection);
+        assert_eq!(csg.children.len(), 4);
+        assert!(csg.children.iter().all(|c| matches!(c, Object::Leaf(_))));
+        // The bored cube: a ray along z meets the box's face; one along the bore through
+        // the x axis passes without meeting anything.
+        let nearest = |origin: DVec3, direction: DVec3| {
+            let q = Query::new(
+                Ray::new(origin, direction),
+                RayKind::Primary,
+                1e-9,
+                f64::INFINITY,
+            );
+            world.bvh.nearest(&q, &mut Vec::new()).map(|hit| hit.t)
+        };
+        assert_eq!(nearest(DVec3::new(0.5, 0.6, -5.0), DVec3::Z), Some(4.0));
+        let bore = nearest(DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
+        assert!(bore.is_none());
+    }
 
     /// Scenes hold up to a hundred thousand objects and more; an object stays a few
     /// cache lines.
