@@ -13,6 +13,7 @@ use super::ovus::Ovus;
 use super::parametric::{Parametric, ParametricSpec};
 use super::poly::Poly;
 use super::prism::Prism;
+use super::quadric::Quadric;
 use super::sor::Sor;
 use super::sphere_sweep::SphereSweep;
 use super::superellipsoid::Superellipsoid;
@@ -27,6 +28,7 @@ use std::sync::Arc;
 #[derive(Debug, Clone, PartialEq)]
 pub enum MathShape {
     Poly(Poly),
+    Quadric(Quadric),
     Isosurface(Isosurface),
     Julia(Julia),
     SphereSweep(SphereSweep),
@@ -84,36 +86,16 @@ pub fn build(
             mixed,
             linear,
             constant,
-        } => {
-            // The second-order polynomial A x² + B y² + C z² + D xy + E xz + F yz + G x +
-            // H y + I z + J, inside where it is negative, as POV-Ray's quadric.
-            let terms = [
-                ([2, 0, 0], squares.x),
-                ([0, 2, 0], squares.y),
-                ([0, 0, 2], squares.z),
-                ([1, 1, 0], mixed.x),
-                ([1, 0, 1], mixed.y),
-                ([0, 1, 1], mixed.z),
-                ([1, 0, 0], linear.x),
-                ([0, 1, 0], linear.y),
-                ([0, 0, 1], linear.z),
-                ([0, 0, 0], *constant),
-            ];
-            let ellipsoid = ellipsoid_box(*squares, *mixed, *linear, *constant);
-            let region = match (bounded_region(object), ellipsoid) {
-                (Some(a), Some(b)) => Some(a.intersection(&b)),
-                (a, b) => a.or(b),
-            };
-            Ok(Some((
-                MathShape::Poly(Poly {
-                    order: 2,
-                    terms: terms.into_iter().filter(|&(_, c)| c != 0.0).collect(),
-                    sturm: false,
-                    region,
-                }),
-                identity,
-            )))
-        }
+        } => Ok(Some((
+            MathShape::Quadric(Quadric::new(
+                *squares,
+                *mixed,
+                *linear,
+                *constant,
+                bounded_region(object),
+            )),
+            identity,
+        ))),
         scene::Shape::Isosurface(iso) => {
             let record = Arc::new(GradientRecord::default());
             reports.push(ShapeReport {
@@ -232,34 +214,6 @@ fn shape_name(shape: &scene::Shape) -> &'static str {
     }
 }
 
-/// The box around a quadric that is an ellipsoid (its quadratic part positive definite,
-/// so that its inside is the bounded one), for the hierarchy and the root search; `None`
-/// for the unbounded quadrics. With `A` the symmetric matrix of the quadratic part, `g` the
-/// linear part and `J` the constant, the centre is `-A⁻¹g/2`, and the surface is
-/// `yᵀAy = k` around it with `k = x₀ᵀAx₀ - J`, reaching `√(k (A⁻¹)ᵢᵢ)` along axis `i`.
-fn ellipsoid_box(squares: DVec3, mixed: DVec3, linear: DVec3, constant: f64) -> Option<Aabb> {
-    let a = glam::DMat3::from_cols(
-        DVec3::new(squares.x, mixed.x / 2.0, mixed.y / 2.0),
-        DVec3::new(mixed.x / 2.0, squares.y, mixed.z / 2.0),
-        DVec3::new(mixed.y / 2.0, mixed.z / 2.0, squares.z),
-    );
-    let minor2 = squares.x * squares.y - mixed.x * mixed.x / 4.0;
-    if !(squares.x > 0.0 && minor2 > 0.0 && a.determinant() > 0.0) {
-        return None;
-    }
-    let inverse = a.inverse();
-    let centre = -0.5 * (inverse * linear);
-    let k = centre.dot(a * centre) - constant;
-    if !(k > 0.0 && k.is_finite()) {
-        return None;
-    }
-    let reach = DVec3::new(inverse.x_axis.x, inverse.y_axis.y, inverse.z_axis.z) * k;
-    let reach = DVec3::new(reach.x.sqrt(), reach.y.sqrt(), reach.z.sqrt());
-    // A hair wider, so that roots on the box's faces are not lost to rounding.
-    let reach = reach * (1.0 + 1e-9) + DVec3::splat(1e-12 * reach.max_element());
-    Some(Aabb::new(centre - reach, centre + reach))
-}
-
 /// The box, in the shape's own frame, of a `bounded_by` made of spheres and boxes; the
 /// polynomial's roots are only looked for inside it.
 fn bounded_region(object: &scene::Object) -> Option<Aabb> {
@@ -293,6 +247,7 @@ impl MathShape {
     pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
         match self {
             MathShape::Poly(s) => s.intersect(ray, roots),
+            MathShape::Quadric(s) => s.intersect(ray, roots),
             MathShape::Isosurface(s) => s.intersect(ray, roots),
             MathShape::Julia(s) => {
                 let mut t = [0.0; 4];
@@ -319,6 +274,7 @@ impl MathShape {
     pub fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<Root> {
         let t = match self {
             MathShape::Poly(s) => s.first_hit(ray, tmin, tmax),
+            MathShape::Quadric(s) => s.first_hit(ray, tmin, tmax),
             MathShape::Julia(s) => return julia::first_root(s, ray, tmin, tmax),
             MathShape::SphereSweep(s) => s.first_hit(ray, tmin, tmax),
             MathShape::Superellipsoid(s) => s.first_hit(ray, tmin, tmax),
@@ -347,6 +303,7 @@ impl MathShape {
     pub fn inside(&self, p: DVec3) -> bool {
         match self {
             MathShape::Poly(s) => s.inside(p),
+            MathShape::Quadric(s) => s.inside(p),
             MathShape::Isosurface(s) => s.inside(p),
             MathShape::Julia(s) => s.inside_point(p),
             MathShape::SphereSweep(s) => s.inside(p),
@@ -366,6 +323,7 @@ impl MathShape {
     pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
         match self {
             MathShape::Poly(s) => s.normal(p),
+            MathShape::Quadric(s) => s.normal(p),
             MathShape::Isosurface(s) => s.normal(p, part),
             MathShape::Julia(s) => s.normal(p),
             MathShape::SphereSweep(s) => s.normal(p),
@@ -385,6 +343,7 @@ impl MathShape {
     pub fn bounds(&self) -> Aabb {
         match self {
             MathShape::Poly(s) => s.bounds(),
+            MathShape::Quadric(s) => s.bounds(),
             MathShape::Isosurface(s) => {
                 let (a, b) = s.bounds();
                 Aabb::new(a, b)
@@ -401,51 +360,6 @@ impl MathShape {
             MathShape::Prism(s) => s.bounds(),
             MathShape::Blob(s) => s.bounds(),
             MathShape::Parametric(s) => s.bounds(),
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn close(a: DVec3, b: DVec3) -> bool {
-        (a - b).abs().max_element() < 1e-8
-    }
-
-    #[test]
-    fn ellipsoids_have_their_box_and_other_quadrics_none() {
-        // x² + 4y² + 2z² = 1.
-        let b = ellipsoid_box(DVec3::new(1.0, 4.0, 2.0), DVec3::ZERO, DVec3::ZERO, -1.0).unwrap();
-        assert!(close(b.max, DVec3::new(1.0, 0.5, 0.5f64.sqrt())), "{b:?}");
-        assert!(close(b.min, -b.max), "{b:?}");
-        // (x - 1)² + y² + z² = 1, written out.
-        let b = ellipsoid_box(DVec3::ONE, DVec3::ZERO, DVec3::new(-2.0, 0.0, 0.0), 0.0).unwrap();
-        assert!(close(b.min, DVec3::new(0.0, -1.0, -1.0)), "{b:?}");
-        assert!(close(b.max, DVec3::new(2.0, 1.0, 1.0)), "{b:?}");
-        // A tilted ellipse, 2x² + 2xy + 2y² + z² = 1: the box reaches √(k (A⁻¹)ᵢᵢ).
-        let b = ellipsoid_box(
-            DVec3::new(2.0, 2.0, 1.0),
-            DVec3::new(2.0, 0.0, 0.0),
-            DVec3::ZERO,
-            -1.0,
-        )
-        .unwrap();
-        assert!(
-            close(
-                b.max,
-                DVec3::new((2.0f64 / 3.0).sqrt(), (2.0f64 / 3.0).sqrt(), 1.0)
-            ),
-            "{b:?}"
-        );
-        // A hyperboloid, a cylinder, an inside-out sphere and an empty one have no box.
-        for (squares, constant) in [
-            (DVec3::new(1.0, -1.0, 1.0), -0.3),
-            (DVec3::new(1.0, 0.0, 1.0), -0.25),
-            (DVec3::splat(-1.0), 1.0),
-            (DVec3::ONE, 1.0),
-        ] {
-            assert!(ellipsoid_box(squares, DVec3::ZERO, DVec3::ZERO, constant).is_none());
         }
     }
 }

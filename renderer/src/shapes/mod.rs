@@ -22,6 +22,7 @@ mod plane_curve;
 mod poly;
 mod polygon;
 mod prism;
+mod quadric;
 mod sor;
 mod sphere;
 mod sphere_sweep;

@@ -55,6 +55,28 @@ fn powers(x: f64, n: usize) -> [f64; MAX_DEGREE + 1] {
     p
 }
 
+/// The interval of t in which a polynomial shape's roots are looked for (inside the
+/// `region` if it has one, else within [`MAX_DISTANCE`] of the ray's nearest approach to
+/// the origin), and the t around which its polynomial along the ray is built.
+pub(super) fn search_span(region: Option<&Aabb>, ray: &Ray) -> Option<(f64, f64, f64)> {
+    match region {
+        Some(region) => {
+            let (lo, hi) =
+                region.clip(ray, ray.direction.recip(), f64::NEG_INFINITY, f64::INFINITY)?;
+            Some((lo, hi, 0.5 * (lo + hi)))
+        }
+        None => {
+            let d2 = ray.direction.length_squared();
+            if d2 == 0.0 {
+                return None;
+            }
+            let centre = -ray.origin.dot(ray.direction) / d2;
+            let reach = MAX_DISTANCE / d2.sqrt();
+            Some((centre - reach, centre + reach, centre))
+        }
+    }
+}
+
 impl Poly {
     /// The polynomial in s of the sum at `o + s·d`: each term's factors expand by the
     /// binomial theorem, (o + s d)ᵏ = Σ C(k, m) oᵏ⁻ᵐ dᵐ sᵐ.
@@ -97,29 +119,9 @@ impl Poly {
         out
     }
 
-    /// The interval of t to search, and the t around which the polynomial is built.
-    fn span(&self, ray: &Ray) -> Option<(f64, f64, f64)> {
-        match &self.region {
-            Some(region) => {
-                let (lo, hi) =
-                    region.clip(ray, ray.direction.recip(), f64::NEG_INFINITY, f64::INFINITY)?;
-                Some((lo, hi, 0.5 * (lo + hi)))
-            }
-            None => {
-                let d2 = ray.direction.length_squared();
-                if d2 == 0.0 {
-                    return None;
-                }
-                let centre = -ray.origin.dot(ray.direction) / d2;
-                let reach = MAX_DISTANCE / d2.sqrt();
-                Some((centre - reach, centre + reach, centre))
-            }
-        }
-    }
-
     /// The crossings of the ray in `[lo, hi]`, ascending.
     fn roots(&self, ray: &Ray, out: &mut [f64; MAX_DEGREE]) -> usize {
-        let Some((lo, hi, centre)) = self.span(ray) else {
+        let Some((lo, hi, centre)) = search_span(self.region.as_ref(), ray) else {
             return 0;
         };
         let mut coeffs = self.along(ray.origin + ray.direction * centre, ray.direction);
