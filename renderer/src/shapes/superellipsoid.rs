@@ -1,15 +1,21 @@
 //! `superellipsoid { <e, n> }`: the points where (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n)
 //! equals 1, inside the box from -1 to 1. The left side raised to n/2 is a nested p-norm,
 //! h = ‖(‖(x, y)‖_{2/e}, z)‖_{2/n}, which grows linearly with distance from the origin and
-//! so is well scaled for root finding: the surface is h = 1. With both exponents at most
-//! 2 the norms are convex and h along a ray has one minimum, bracketed by a golden-section
-//! search that stops as soon as it finds a point inside; with either above 2 the shape is
-//! pinched, and the ray is first cut where it crosses the coordinate planes and the
-//! diagonal planes x = ±y, between which h has at most one extremum.
+//! so is well scaled for root finding: the surface is h = 1.
 //!
-//! Rays search on the surface's power form F = h^(2/n) - 1 instead, which has the sign and
-//! the minima of h - 1 but needs no root of a sum: with the usual exponents (e and n of 1,
-//! 0.5, 0.25, 0.2, ...) it is products alone, where h costs four calls of pow.
+//! With both exponents at most 2 the norms are convex, and so is h along every ray:
+//! Newton's method on h - 1 started outside the shape never overshoots (each tangent
+//! meets 1 before h does) and converges to the nearest crossing in a few steps, or shows
+//! that there is none when h stops falling; started from the far end it finds the last
+//! crossing the same way.
+//!
+//! With either exponent above 2 the shape is pinched: the ray is first cut where it
+//! crosses the coordinate planes and the diagonal planes x = ±y, between which h has at
+//! most one extremum, bracketed by a golden-section search that stops as soon as it finds
+//! a point on the other side. Pinched shapes search on the surface's power form
+//! F = h^(2/n) - 1, which has the sign and the extrema of h - 1 but needs no root of a
+//! sum: with the usual exponents (e and n of 1, 0.5, 0.25, 0.2, ...) it is products alone,
+//! where h costs four calls of pow.
 
 use super::OrderedCrossings;
 use crate::ray::Ray;
@@ -20,6 +26,13 @@ const MAX_SEARCH: usize = 60;
 
 /// Root refinement steps at most (each narrows a bracket by secant or bisection).
 const MAX_REFINE: usize = 80;
+
+/// Newton steps at most toward a crossing of a convex shape: convergence is quadratic,
+/// and even at a grazing ray's double root, where it is linear, a step halves the gap.
+const MAX_NEWTON: usize = 80;
+
+/// The Newton step, in the shape's own units, below which a crossing is taken as found.
+const NEWTON_TOLERANCE: f64 = 1e-12;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Superellipsoid {
@@ -40,6 +53,7 @@ pub struct Superellipsoid {
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Power {
     One,
+    Half,
     Integer(i32),
     Real(f64),
 }
@@ -47,7 +61,9 @@ enum Power {
 impl Power {
     fn new(p: f64) -> Power {
         let rounded = p.round();
-        if (p - rounded).abs() > 1e-12 * p.abs() || rounded.abs() > 64.0 {
+        if p == 0.5 {
+            Power::Half
+        } else if (p - rounded).abs() > 1e-12 * p.abs() || rounded.abs() > 64.0 {
             Power::Real(p)
         } else if rounded == 1.0 {
             Power::One
@@ -59,6 +75,7 @@ impl Power {
     fn of(self, x: f64) -> f64 {
         match self {
             Power::One => x,
+            Power::Half => x.sqrt(),
             Power::Integer(n) => x.powi(n),
             Power::Real(p) => x.powf(p),
         }
@@ -128,17 +145,94 @@ impl Superellipsoid {
         if n.is_finite() { n } else { p }
     }
 
+    /// h at `p` and its rate of change along `d`. With X = |x|^(2/e), S = X + Y,
+    /// G = S^(e/n) + Z = h^(2/n): ∂h/∂x = (h/G)·(S^(e/n)/S)·(X/|x|)·sign x, and alike for y;
+    /// ∂h/∂z = (h/G)·(Z/|z|)·sign z. Where a coordinate is zero the partial is taken as
+    /// zero, a subgradient of the convex gauge there.
+    fn gauge_and_slope(&self, p: DVec3, d: DVec3) -> (f64, f64) {
+        let (ax, ay, az) = (p.x.abs(), p.y.abs(), p.z.abs());
+        let (px, py, pz) = (self.xy.of(ax), self.xy.of(ay), self.z.of(az));
+        let across = px + py;
+        let nested = self.nest.of(across);
+        let g = nested + pz;
+        if g == 0.0 {
+            return (0.0, 0.0);
+        }
+        let h = self.root.of(g);
+        let per_unit = |power: f64, a: f64| if a > 0.0 { power / a } else { 0.0 };
+        let outer = per_unit(nested, across);
+        let grad = DVec3::new(
+            outer * per_unit(px, ax) * p.x.signum(),
+            outer * per_unit(py, ay) * p.y.signum(),
+            per_unit(pz, az) * p.z.signum(),
+        );
+        (h, h / g * grad.dot(d))
+    }
+
+    /// The crossing of a convex shape nearest `from` on the way to `to`, by Newton's method
+    /// on h - 1; h at `from` is at least 1. None when h grows toward `to` or the tangent
+    /// passes `to` before reaching 1, for then h cannot reach 1 before `to` either.
+    fn newton(&self, ray: &Ray, from: f64, to: f64) -> Option<f64> {
+        let toward = to - from;
+        let speed = ray.direction.length();
+        let mut t = from;
+        for _ in 0..MAX_NEWTON {
+            let (h, slope) = self.gauge_and_slope(ray.at(t), ray.direction);
+            let excess = h - 1.0;
+            if excess <= 0.0 {
+                return Some(t);
+            }
+            let step = -excess / slope;
+            // A step away from `to`, or none (a NaN slope included), means h does not
+            // fall toward it.
+            if step * toward <= 0.0 || step.is_nan() {
+                return None;
+            }
+            let next = t + step;
+            if (next - to) * toward > 0.0 {
+                return None;
+            }
+            if step.abs() * speed <= NEWTON_TOLERANCE || next == t {
+                return Some(next);
+            }
+            t = next;
+        }
+        None
+    }
+
+    /// The crossings of a convex shape in `[t0, t1]`, nearest first: h along the ray is
+    /// convex, so there are at most two, the entry found from `t0` and the exit from `t1`.
+    fn convex_crossings(&self, ray: &Ray, t0: f64, t1: f64, take: &mut dyn FnMut(f64) -> bool) {
+        let outside = |t: f64| self.gauge_and_slope(ray.at(t), ray.direction).0 >= 1.0;
+        let exit_outside = outside(t1);
+        if outside(t0) {
+            let Some(entry) = self.newton(ray, t0, t1) else {
+                return;
+            };
+            if take(entry) || !exit_outside {
+                return;
+            }
+            if let Some(exit) = self.newton(ray, t1, entry)
+                && exit > entry
+            {
+                take(exit);
+            }
+        } else if exit_outside && let Some(exit) = self.newton(ray, t1, t0) {
+            take(exit);
+        }
+    }
+
     /// The crossings in one stretch where φ, the power form along the ray, has at most one
     /// interior extremum; true when `take` has had enough.
     #[allow(clippy::too_many_arguments)]
     fn stretch(
         &self,
+        ray: &Ray,
         phi: &dyn Fn(f64) -> f64,
         a: f64,
         fa: f64,
         b: f64,
         fb: f64,
-        lipschitz: f64,
         take: &mut dyn FnMut(f64) -> bool,
     ) -> bool {
         if (fa < 0.0) != (fb < 0.0) {
@@ -148,6 +242,18 @@ impl Superellipsoid {
         // minimum; inside, the maximum.
         let sign = if fa < 0.0 { -1.0 } else { 1.0 };
         let g = |t: f64| sign * phi(t);
+        // No coordinate changes sign within the stretch, so each |coordinate| is affine
+        // along it and the power form, rising in each, is least (or most) over [lo, hi]
+        // at the point made of the smaller (larger) |coordinate| of the two ends: a bound
+        // of g that ends the search as soon as it shows that g stays positive.
+        let g_floor = |lo: f64, hi: f64| {
+            let (p, q) = (ray.at(lo).abs(), ray.at(hi).abs());
+            let corner = if sign > 0.0 { p.min(q) } else { p.max(q) };
+            sign * self.power_form(corner)
+        };
+        if g_floor(a, b) > 0.0 {
+            return false;
+        }
         let ratio = 0.5 * (5f64.sqrt() - 1.0);
         let (mut lo, mut hi) = (a, b);
         let mut x1 = hi - ratio * (hi - lo);
@@ -160,14 +266,7 @@ impl Superellipsoid {
                 return take(refine(phi, a, fa, best_t, fm))
                     || take(refine(phi, best_t, fm, b, fb));
             }
-            // A convex gauge is Lipschitz with |∇h| <= √3: no crossing can hide in a
-            // bracket too short to drop below zero from here. φ is the power form; h - 1
-            // is its root.
-            if self.convex() && sign > 0.0 && self.root.of(best + 1.0) - 1.0 > lipschitz * (hi - lo)
-            {
-                return false;
-            }
-            if hi - lo <= 1e-13 * (b - a).max(f64::MIN_POSITIVE) {
+            if hi - lo <= 1e-13 * (b - a).max(f64::MIN_POSITIVE) || g_floor(lo, hi) > 0.0 {
                 return false;
             }
             if g1 < g2 {
@@ -197,6 +296,10 @@ impl OrderedCrossings for Superellipsoid {
         if t0 >= t1 {
             return;
         }
+        if self.convex() {
+            self.convex_crossings(ray, t0, t1, take);
+            return;
+        }
         let phi = |t: f64| self.power_form(ray.at(t));
         // Where the ray changes octant or crosses a diagonal plane, for pinched shapes.
         let mut cuts = [0.0; 7];
@@ -222,12 +325,11 @@ impl OrderedCrossings for Superellipsoid {
         cuts[n] = t1;
         n += 1;
         cuts[..n].sort_by(f64::total_cmp);
-        let scale = ray.direction.length() * 3f64.sqrt();
         let mut f_lo = phi(cuts[0]);
         for w in 1..n {
             let (a, b) = (cuts[w - 1], cuts[w]);
             let f_hi = phi(b);
-            if b - a > 0.0 && self.stretch(&phi, a, f_lo, b, f_hi, scale, take) {
+            if b - a > 0.0 && self.stretch(ray, &phi, a, f_lo, b, f_hi, take) {
                 return;
             }
             f_lo = f_hi;
@@ -373,6 +475,68 @@ mod tests {
             if let Some(t) = s.first_hit(&ray, 0.0, f64::INFINITY) {
                 assert!(t.is_finite());
                 assert!(s.normal(ray.at(t)).is_finite());
+            }
+        }
+    }
+
+    /// Shapes box-like, diamond-like (exponent 1, with its kinks) and pinched are crossed
+    /// where a dense walk along the ray changes sides, and a ray starting inside a convex
+    /// one finds its exit alone.
+    #[test]
+    fn crossings_match_a_dense_walk() {
+        for (e, n) in [
+            (0.2, 0.2),
+            (1.0, 0.3),
+            (1.0, 1.0),
+            (2.0, 2.0),
+            (0.5, 1.5),
+            (2.5, 2.5),
+            (0.5, 3.0),
+        ] {
+            let s = Superellipsoid::new(e, n);
+            for k in 0..40 {
+                let a = k as f64 * 0.37;
+                let origin = DVec3::new(3.0 * a.cos(), 1.3 * (2.0 * a).sin(), -3.0);
+                let target = DVec3::new(0.4 * (3.0 * a).sin(), 0.3 * a.cos(), 0.2);
+                let ray = Ray::new(origin, target - origin);
+                let mut roots = Roots::new();
+                s.intersect(&ray, &mut roots);
+                let found: Vec<f64> = roots.as_slice().iter().map(|r| r.t).collect();
+                let steps = 20_000;
+                let mut changes = Vec::new();
+                for i in 0..steps {
+                    let (t0, t1) = (
+                        i as f64 * 2.0 / steps as f64,
+                        (i + 1) as f64 * 2.0 / steps as f64,
+                    );
+                    if s.inside(ray.at(t0)) != s.inside(ray.at(t1)) {
+                        changes.push(t1);
+                    }
+                }
+                assert_eq!(
+                    found.len(),
+                    changes.len(),
+                    "<{e}, {n}> ray {k}: {found:?} against {changes:?}"
+                );
+                for (t, c) in found.iter().zip(&changes) {
+                    assert!(
+                        (t - c).abs() <= 2.0 / steps as f64,
+                        "<{e}, {n}> ray {k}: {t} against {c}"
+                    );
+                    assert!(s.power_form(ray.at(*t)).abs() < 1e-9);
+                }
+                if let Some(&entry) = found.first()
+                    && s.convex()
+                {
+                    let middle = 0.5 * (entry + found[found.len() - 1]);
+                    let inner = Ray::new(ray.at(middle), ray.direction);
+                    let exit = s.first_hit(&inner, 0.0, f64::INFINITY).unwrap();
+                    let last = found[found.len() - 1] - middle;
+                    assert!(
+                        (exit - last).abs() < 1e-9,
+                        "<{e}, {n}> ray {k}: {exit} against {last}"
+                    );
+                }
             }
         }
     }
