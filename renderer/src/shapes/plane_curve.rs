@@ -71,6 +71,19 @@ impl CurveSegment {
         (self.a[3] * (3.0 * s) + self.a[2] * 2.0) * s + self.a[1]
     }
 
+    /// A range that holds coordinate `axis` over the whole segment: with s from 0 to 1
+    /// every power of s lies in [0, 1], so each term adds at most its coefficient's
+    /// positive part and at least its negative part. Cheaper than the exact box, it lets
+    /// a test skip the segments that cannot matter.
+    pub fn coordinate_range(&self, axis: usize) -> (f64, f64) {
+        let c = self.coordinate(axis);
+        c[1..=self.degree]
+            .iter()
+            .fold((c[0], c[0]), |(lo, hi), &k| {
+                (lo + k.min(0.0), hi + k.max(0.0))
+            })
+    }
+
     /// The coefficients of one coordinate (0: first, 1: second), lowest first.
     pub fn coordinate(&self, axis: usize) -> [f64; 4] {
         self.a.map(|v| v[axis])
@@ -99,12 +112,13 @@ impl CurveSegment {
         out
     }
 
-    /// The parameters in [0, 1) where coordinate `axis` equals `value`.
+    /// The parameters in [0, 1) where coordinate `axis` equals `value`, by the closed
+    /// forms (a segment is at most cubic).
     pub fn crossings_of(&self, axis: usize, value: f64, out: &mut Vec<f64>) {
         let mut c = self.coordinate(axis);
         c[0] -= value;
         let start = out.len();
-        polynomial::roots_in(&c[..=self.degree], 0.0, 1.0, out);
+        solve(&c[..=self.degree], 0.0, 1.0, false, out);
         let mut kept = start;
         for k in start..out.len() {
             if out[k] < 1.0 {
@@ -146,6 +160,12 @@ impl CurveSegment {
 pub fn encloses(segments: &[CurveSegment], q: DVec2, scratch: &mut Vec<f64>) -> bool {
     let mut inside = false;
     for segment in segments {
+        // Segments that the half-line cannot meet, or meets only at or behind `q`,
+        // change nothing.
+        let (z_lo, z_hi) = segment.coordinate_range(1);
+        if q.y < z_lo || q.y > z_hi || segment.coordinate_range(0).1 <= q.x {
+            continue;
+        }
         scratch.clear();
         segment.crossings_of(1, q.y, scratch);
         for &s in scratch.iter() {
@@ -274,5 +294,29 @@ mod tests {
         assert!(!encloses(&square, DVec2::new(-1.0, 1.0), &mut scratch));
         let s = square[1].nearest(DVec2::new(3.0, 0.5));
         assert!((s - 0.25).abs() < 1e-12);
+    }
+
+    #[test]
+    fn coordinate_ranges_hold_the_segment() {
+        let p = [
+            DVec2::new(0.0, 1.0),
+            DVec2::new(3.0, -2.0),
+            DVec2::new(-1.0, 4.0),
+            DVec2::new(2.0, 0.5),
+        ];
+        for segment in [
+            CurveSegment::linear(p[0], p[1]),
+            CurveSegment::quadratic(p[0], p[1], p[2]),
+            CurveSegment::cubic(p[0], p[1], p[2], p[3]),
+            CurveSegment::bezier(p[0], p[1], p[2], p[3]),
+        ] {
+            for axis in 0..2 {
+                let (lo, hi) = segment.coordinate_range(axis);
+                for k in 0..=100 {
+                    let v = segment.at(k as f64 / 100.0)[axis];
+                    assert!(v >= lo - 1e-12 && v <= hi + 1e-12, "{v} outside {lo}..{hi}");
+                }
+            }
+        }
     }
 }
