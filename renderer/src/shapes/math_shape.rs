@@ -72,12 +72,12 @@ pub fn build(
         scene::Shape::Polynomial(p) => {
             let terms = p.terms.iter().map(|t| (t.powers, t.coefficient)).collect();
             Ok(Some((
-                MathShape::Poly(Poly {
-                    order: p.order as usize,
+                MathShape::Poly(Poly::new(
+                    p.order as usize,
                     terms,
-                    sturm: p.sturm,
-                    region: bounded_region(object),
-                }),
+                    p.sturm,
+                    bounded_region(object),
+                )),
                 identity,
             )))
         }

@@ -13,6 +13,12 @@ use glam::DVec3;
 /// How far along an unbounded ray roots are looked for, as POV-Ray does.
 const MAX_DISTANCE: f64 = 1.0e7;
 
+/// The highest order whose polynomial along a ray is built from values (see `Dense`).
+const DENSE_ORDER: usize = 4;
+
+/// How many coefficients a polynomial of order `DENSE_ORDER` has at most.
+const DENSE_LEN: usize = (DENSE_ORDER + 1) * (DENSE_ORDER + 2) * (DENSE_ORDER + 3) / 6;
+
 #[derive(Debug, Clone, PartialEq)]
 pub struct Poly {
     pub order: usize,
@@ -21,7 +27,144 @@ pub struct Poly {
     pub sturm: bool,
     /// Where the surface is looked for: the `bounded_by` box, in the shape's frame.
     pub region: Option<Aabb>,
+    /// Orders 2 to 4 (quadrics, `cubic`, `quartic`) also keep every coefficient.
+    dense: Option<Dense>,
 }
+
+/// Every coefficient of a polynomial of order `ORDER` <= 4, in the order nested Horner
+/// evaluation reads them: powers of x descending, within them powers of y descending,
+/// within those powers of z descending. Straight-line evaluation without power tables
+/// costs about one multiply-add per coefficient, and the polynomial along a ray follows
+/// from a few such values, which in the WebAssembly interpreter costs a small part of
+/// expanding every term binomially.
+#[derive(Debug, Clone, PartialEq)]
+struct Dense([f64; DENSE_LEN]);
+
+impl Dense {
+    fn new(order: usize, terms: &[([u8; 3], f64)]) -> Dense {
+        let mut c = [0.0; DENSE_LEN];
+        let mut at = 0;
+        for i in (0..=order).rev() {
+            for j in (0..=order - i).rev() {
+                for k in (0..=order - i - j).rev() {
+                    let powers = [i, j, k].map(|p| p as u8);
+                    c[at] = terms
+                        .iter()
+                        .filter(|(p, _)| *p == powers)
+                        .map(|(_, value)| value)
+                        .sum();
+                    at += 1;
+                }
+            }
+        }
+        Dense(c)
+    }
+
+    /// The polynomial's value at `p`.
+    #[inline(always)]
+    fn value<const ORDER: usize>(&self, p: DVec3) -> f64 {
+        let c = &self.0;
+        let mut at = 0;
+        let mut sx = 0.0;
+        for i in (0..=ORDER).rev() {
+            let mut sy = 0.0;
+            for j in (0..=ORDER - i).rev() {
+                let mut sz = 0.0;
+                for _ in 0..=ORDER - i - j {
+                    sz = sz * p.z + c[at];
+                    at += 1;
+                }
+                sy = sy * p.y + sz;
+            }
+            sx = sx * p.x + sy;
+        }
+        sx
+    }
+
+    /// The gradient at `p`: the same nested Horner evaluation, each level carrying its
+    /// derivatives along.
+    #[inline(always)]
+    fn gradient<const ORDER: usize>(&self, p: DVec3) -> DVec3 {
+        let c = &self.0;
+        let mut at = 0;
+        let (mut sx, mut gx) = (0.0, DVec3::ZERO);
+        for i in (0..=ORDER).rev() {
+            let (mut sy, mut gy) = (0.0, DVec3::ZERO);
+            for j in (0..=ORDER - i).rev() {
+                let (mut sz, mut dz) = (0.0, 0.0);
+                for _ in 0..=ORDER - i - j {
+                    dz = dz * p.z + sz;
+                    sz = sz * p.z + c[at];
+                    at += 1;
+                }
+                gy = DVec3::new(0.0, gy.y * p.y + sy, gy.z * p.y + dz);
+                sy = sy * p.y + sz;
+            }
+            gx = DVec3::new(gx.x * p.x + sx, gx.y * p.x + gy.y, gx.z * p.x + gy.z);
+            sx = sx * p.x + sy;
+        }
+        gx
+    }
+
+    /// The terms of the highest order alone, at `d`: the leading coefficient along a ray
+    /// of direction `d`.
+    #[inline(always)]
+    fn top<const ORDER: usize>(&self, d: DVec3) -> f64 {
+        let c = &self.0;
+        let mut zpow = [1.0; DENSE_ORDER + 1];
+        for m in 1..=ORDER {
+            zpow[m] = zpow[m - 1] * d.z;
+        }
+        let mut at = 0;
+        let mut sx = 0.0;
+        for i in (0..=ORDER).rev() {
+            let mut sy = 0.0;
+            for j in (0..=ORDER - i).rev() {
+                // The group of x^i y^j starts with its highest power of z.
+                sy = sy * d.y + c[at] * zpow[ORDER - i - j];
+                at += ORDER - i - j + 1;
+            }
+            sx = sx * d.x + sy;
+        }
+        sx
+    }
+
+    /// The polynomial in s of the sum at `o + s·d`, from its values at s = 0, ±1 (and
+    /// ±1/2 for a quartic) and its leading coefficient. `d` spans the searched interval,
+    /// so the values are those over it and the coefficients come out as well scaled as
+    /// the values the root finder judges them by.
+    #[inline(always)]
+    fn along<const ORDER: usize>(&self, o: DVec3, d: DVec3) -> [f64; ORDER_MAX] {
+        let mut out = [0.0; ORDER_MAX];
+        let c0 = self.value::<ORDER>(o);
+        let top = self.top::<ORDER>(d);
+        let (plus, minus) = (self.value::<ORDER>(o + d), self.value::<ORDER>(o - d));
+        let (even, odd) = (0.5 * (plus + minus) - c0, 0.5 * (plus - minus));
+        out[0] = c0;
+        out[ORDER] = top;
+        match ORDER {
+            2 => out[1] = odd,
+            3 => {
+                out[1] = odd - top;
+                out[2] = even;
+            }
+            _ => {
+                // Odd part c1 s + c3 s³ at s = 1 and 1/2.
+                let half = 0.5 * d;
+                let (plus, minus) = (self.value::<ORDER>(o + half), self.value::<ORDER>(o - half));
+                let odd_half = 0.5 * (plus - minus);
+                let c3 = (odd - 2.0 * odd_half) * (4.0 / 3.0);
+                out[1] = odd - c3;
+                out[2] = even - top;
+                out[3] = c3;
+            }
+        }
+        out
+    }
+}
+
+/// Room for the coefficients of a dense polynomial along a ray.
+const ORDER_MAX: usize = DENSE_ORDER + 1;
 
 /// A polynomial in t, lowest degree first.
 type Coeffs = [f64; MAX_DEGREE + 1];
@@ -78,6 +221,24 @@ pub(super) fn search_span(region: Option<&Aabb>, ray: &Ray) -> Option<(f64, f64,
 }
 
 impl Poly {
+    pub fn new(
+        order: usize,
+        terms: Vec<([u8; 3], f64)>,
+        sturm: bool,
+        region: Option<Aabb>,
+    ) -> Poly {
+        let dense = (2..=DENSE_ORDER)
+            .contains(&order)
+            .then(|| Dense::new(order, &terms));
+        Poly {
+            order,
+            terms,
+            sturm,
+            region,
+            dense,
+        }
+    }
+
     /// The polynomial in s of the sum at `o + s·d`: each term's factors expand by the
     /// binomial theorem, (o + s d)ᵏ = Σ C(k, m) oᵏ⁻ᵐ dᵐ sᵐ.
     fn along(&self, o: DVec3, d: DVec3) -> Coeffs {
@@ -124,18 +285,35 @@ impl Poly {
         let Some((lo, hi, centre)) = search_span(self.region.as_ref(), ray) else {
             return 0;
         };
-        let mut coeffs = self.along(ray.origin + ray.direction * centre, ray.direction);
         // In units of the half-span, so that the solvers, which judge coefficients against
         // the largest, weigh them alike at any scale of the scene.
         let half = (lo - centre).abs().max((hi - centre).abs());
         if !(half > 0.0 && half.is_finite()) {
             return 0;
         }
-        let mut power = 1.0;
-        for c in &mut coeffs[..=self.order] {
-            *c *= power;
-            power *= half;
-        }
+        let o = ray.origin + ray.direction * centre;
+        let coeffs = match &self.dense {
+            Some(dense) => {
+                let d = ray.direction * half;
+                let mut c = [0.0; MAX_DEGREE + 1];
+                let small = match self.order {
+                    2 => dense.along::<2>(o, d),
+                    3 => dense.along::<3>(o, d),
+                    _ => dense.along::<4>(o, d),
+                };
+                c[..ORDER_MAX].copy_from_slice(&small);
+                c
+            }
+            None => {
+                let mut coeffs = self.along(o, ray.direction);
+                let mut power = 1.0;
+                for c in &mut coeffs[..=self.order] {
+                    *c *= power;
+                    power *= half;
+                }
+                coeffs
+            }
+        };
         let (a, b) = ((lo - centre) / half, (hi - centre) / half);
         let mut n = 0;
         let mut put = |x: f64| {
@@ -191,6 +369,12 @@ impl Poly {
     }
 
     pub fn value(&self, p: DVec3) -> f64 {
+        match (&self.dense, self.order) {
+            (Some(dense), 2) => return dense.value::<2>(p),
+            (Some(dense), 3) => return dense.value::<3>(p),
+            (Some(dense), 4) => return dense.value::<4>(p),
+            _ => {}
+        }
         let (px, py, pz) = (
             powers(p.x, self.order),
             powers(p.y, self.order),
@@ -208,6 +392,12 @@ impl Poly {
 
     /// The gradient of the sum.
     pub fn normal(&self, p: DVec3) -> DVec3 {
+        match (&self.dense, self.order) {
+            (Some(dense), 2) => return dense.gradient::<2>(p),
+            (Some(dense), 3) => return dense.gradient::<3>(p),
+            (Some(dense), 4) => return dense.gradient::<4>(p),
+            _ => {}
+        }
         let (px, py, pz) = (
             powers(p.x, self.order),
             powers(p.y, self.order),
@@ -254,12 +444,12 @@ mod tests {
             ([0, 0, 2], -104.0),
             ([0, 0, 0], 784.0),
         ];
-        Poly {
-            order: 4,
+        Poly::new(
+            4,
             terms,
             sturm,
-            region: Some(Aabb::new(DVec3::splat(-10.0), DVec3::splat(10.0))),
-        }
+            Some(Aabb::new(DVec3::splat(-10.0), DVec3::splat(10.0))),
+        )
     }
 
     #[test]
@@ -280,6 +470,60 @@ mod tests {
             for (got, want) in t.iter().zip(want) {
                 assert!((got - want).abs() < 1e-8, "sturm {sturm}: {t:?}");
             }
+        }
+    }
+
+    #[test]
+    fn the_polynomial_along_a_ray_from_values_matches_the_binomial_expansion() {
+        // Every term of orders 2 to 4, with unequal coefficients.
+        for order in 2..=DENSE_ORDER {
+            let mut terms = Vec::new();
+            for i in 0..=order {
+                for j in 0..=order - i {
+                    for k in 0..=order - i - j {
+                        let c = 1.0 + (i * 7 + j * 3 + k) as f64 * 0.37 - (i * j) as f64;
+                        terms.push(([i as u8, j as u8, k as u8], c));
+                    }
+                }
+            }
+            let poly = Poly::new(order, terms, false, None);
+            let dense = poly.dense.as_ref().expect("dense coefficients");
+            let (o, d, half) = (DVec3::new(0.3, -1.2, 0.7), DVec3::new(-0.4, 0.9, 0.25), 1.7);
+            let mut want = poly.along(o, d);
+            let mut power = 1.0;
+            for c in &mut want[..=order] {
+                *c *= power;
+                power *= half;
+            }
+            let got = match order {
+                2 => dense.along::<2>(o, d * half),
+                3 => dense.along::<3>(o, d * half),
+                _ => dense.along::<4>(o, d * half),
+            };
+            let scale = want.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+            for m in 0..=order {
+                assert!(
+                    (got[m] - want[m]).abs() < 1e-12 * scale,
+                    "order {order}: {got:?} {want:?}"
+                );
+            }
+            let p = DVec3::new(0.5, 0.25, -0.75);
+            let by_terms: f64 = poly
+                .terms
+                .iter()
+                .map(|&([i, j, k], c)| {
+                    c * p.x.powi(i.into()) * p.y.powi(j.into()) * p.z.powi(k.into())
+                })
+                .sum();
+            assert!((poly.value(p) - by_terms).abs() < 1e-12 * by_terms.abs().max(1.0));
+            let h = 1e-6;
+            let slope =
+                |axis: DVec3| (poly.value(p + axis * h) - poly.value(p - axis * h)) / (2.0 * h);
+            let want = DVec3::new(slope(DVec3::X), slope(DVec3::Y), slope(DVec3::Z));
+            assert!(
+                (poly.normal(p) - want).length() < 1e-6 * want.length(),
+                "{want}"
+            );
         }
     }
 
