@@ -310,7 +310,16 @@ impl Julia {
                     let h2 = qmul(q, q);
                     qmul(h2, v) + qmul(qmul(q, v), q) + qmul(v, h2)
                 }
-                (JuliaAlgebra::Quaternion, _) => qmul(q, v) + qmul(v, q),
+                // q v + v q: the cross products of the two orders cancel.
+                (JuliaAlgebra::Quaternion, _) => {
+                    let real = q.x * v.x - (q.y * v.y + q.z * v.z + q.w * v.w);
+                    2.0 * DVec4::new(
+                        real,
+                        q.x * v.y + v.x * q.y,
+                        q.x * v.z + v.x * q.z,
+                        q.x * v.w + v.x * q.w,
+                    )
+                }
                 (JuliaAlgebra::Hypercomplex, f) => {
                     let (a, b) = split(q);
                     let (va, vb) = split(v);
@@ -546,6 +555,16 @@ mod tests {
         // A ray past the bounding sphere misses.
         let away = Ray::new(DVec3::new(3.0, 0.0, -3.0), DVec3::Z);
         assert!(first_root(&julia, &away, 0.0, f64::INFINITY).is_none());
+    }
+
+    #[test]
+    fn the_square_map_derivative_is_the_symmetric_product() {
+        let julia = gallery_julia(8);
+        let q = DVec4::new(0.3, -0.7, 0.2, 0.9);
+        let v = DVec4::new(-0.4, 0.1, 0.8, 0.25);
+        let (_, derivative) = julia.step_with_derivative(q);
+        let want = qmul(q, v) + qmul(v, q);
+        assert!((derivative(v) - want).length() < 1e-15, "{want}");
     }
 
     #[test]
