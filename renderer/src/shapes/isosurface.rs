@@ -6,7 +6,7 @@
 //! threshold in between. A stretch shorter than the accuracy whose far end lies inside
 //! holds the crossing. The largest gradient met is recorded for POV-Ray's warning.
 
-use super::{Root, Roots};
+use super::Roots;
 use crate::fast_math;
 use crate::function_program::Program;
 use crate::ray::Ray;
@@ -232,12 +232,14 @@ impl Isosurface {
         let accuracy = self.accuracy / search.speed;
         let reach = max_gradient * self.accuracy * 4.0;
         let mut traced = 0u32;
-        let mut found = Roots::new();
+        // Where the container's surface counts, found before the search but put in order
+        // around its crossings: the entry before them, the exit after them.
+        let (mut entry, mut exit) = (None, None);
         if self.closed {
             let at_entry = search.value(t1);
             if t1 > accuracy {
                 if at_entry < 0.0 {
-                    found.push(t1, side1);
+                    entry = Some((t1, side1));
                     traced += 1;
                     search.side = -search.side;
                 }
@@ -249,7 +251,7 @@ impl Isosurface {
                     }
                 }
                 if search.value(t2) < 0.0 {
-                    found.push(t2, side2);
+                    exit = Some((t2, side2));
                 }
             }
         }
@@ -265,11 +267,14 @@ impl Isosurface {
                 search.side = -1.0;
             }
         }
+        if let Some((t, part)) = entry {
+            roots.push(t, part);
+        }
         while traced < self.max_trace {
             let Some(t) = search.find(tmin, tmax) else {
                 break;
             };
-            found.push(t, PART_SURFACE);
+            roots.push(t, PART_SURFACE);
             traced += 1;
             tmin = t + accuracy * 5.0;
             if tmax - tmin < accuracy {
@@ -281,10 +286,8 @@ impl Isosurface {
         if self.evaluate.is_some() {
             self.record.adapted.record(search.max_gradient);
         }
-        let mut list: Vec<Root> = found.as_slice().to_vec();
-        list.sort_by(|a, b| a.t.total_cmp(&b.t));
-        for r in list {
-            roots.push(r.t, r.part);
+        if let Some((t, part)) = exit {
+            roots.push(t, part);
         }
     }
 
