@@ -143,6 +143,13 @@ enum Node {
     /// a·b + c, and a·b - c: a product used once, fused into the sum that uses it.
     MulAdd(u32, u32, u32),
     MulSub(u32, u32, u32),
+    /// a·b + c·d: two products used once, summed.
+    MulMulAdd([u32; 4]),
+    /// a·b + (c·d + e·f): the sum of three products, as dot products and sums of
+    /// squares are written.
+    Dot3([u32; 6]),
+    /// sin(a·k) or cos(a·k), when the product serves only a sine and cosine pair.
+    ScaledTrig(Unary, u32, f64),
     Select3(u32, u32, u32),
     Select4(u32, u32, u32, u32),
     Min(Vec<u32>),
@@ -188,6 +195,8 @@ enum Inst {
     Unary(u8, Unary, u8),
     /// Both of one argument: sine to the first register, cosine to the second.
     SinCos(u8, u8, u8),
+    /// Both of the argument times k.
+    SinCosK(u8, u8, u8, f64),
     Add(u8, u8, u8),
     Sub(u8, u8, u8),
     Mul(u8, u8, u8),
@@ -195,6 +204,9 @@ enum Inst {
     /// o = a·b + c and o = a·b - c.
     MulAdd(u8, [u8; 3]),
     MulSub(u8, [u8; 3]),
+    /// o = a·b + c·d and o = a·b + (c·d + e·f).
+    MulMulAdd(u8, [u8; 4]),
+    Dot3(u8, [u8; 6]),
     /// o = a + k, a·k, k - a, a / k and k / a.
     AddK(u8, u8, f64),
     MulK(u8, u8, f64),
@@ -268,7 +280,10 @@ impl Builder {
             | Node::Sum { .. }
             | Node::WithConstant(..)
             | Node::MulAdd(..)
-            | Node::MulSub(..) => None,
+            | Node::MulSub(..)
+            | Node::MulMulAdd(..)
+            | Node::Dot3(..)
+            | Node::ScaledTrig(..) => None,
         };
         if let Some(key) = &key
             && let Some(&index) = self.known.get(key)
@@ -428,27 +443,13 @@ impl Program {
         let live = live_nodes(&nodes, result, params);
         fuse(&mut nodes, &live, result);
         let live = live_nodes(&nodes, result, params);
+        scale_trig_pairs(&mut nodes, &live, result);
+        let live = live_nodes(&nodes, result, params);
         // A sine and a cosine of one argument: the later one is filled by the earlier.
         let mut partner: Vec<Option<u32>> = vec![None; n];
-        let mut trig: HashMap<u32, (Option<u32>, Option<u32>)> = HashMap::new();
-        for (i, node) in nodes.iter().enumerate() {
-            if !live[i] {
-                continue;
-            }
-            if let Node::Unary(f @ (Unary::Sin | Unary::Cos), a) = node {
-                let entry = trig.entry(*a).or_default();
-                if *f == Unary::Sin {
-                    entry.0.get_or_insert(i as u32);
-                } else {
-                    entry.1.get_or_insert(i as u32);
-                }
-            }
-        }
-        for (sin, cos) in trig.values() {
-            if let (Some(s), Some(c)) = (sin, cos) {
-                let (first, second) = if s < c { (*s, *c) } else { (*c, *s) };
-                partner[first as usize] = Some(second);
-            }
+        for (s, c) in trig_pairs(&nodes, &live) {
+            let (first, second) = if s < c { (s, c) } else { (c, s) };
+            partner[first] = Some(second as u32);
         }
         let filled: Vec<bool> = {
             let mut f = vec![false; n];
@@ -539,6 +540,23 @@ impl Program {
                 }),
                 Node::MulAdd(a, b, c) => Some(Inst::MulAdd(out, [r(a), r(b), r(c)])),
                 Node::MulSub(a, b, c) => Some(Inst::MulSub(out, [r(a), r(b), r(c)])),
+                Node::MulMulAdd(v) => Some(Inst::MulMulAdd(out, v.map(|a| r(&a)))),
+                Node::Dot3(v) => Some(Inst::Dot3(out, v.map(|a| r(&a)))),
+                Node::ScaledTrig(f, a, k) => match partner[i] {
+                    Some(p) => {
+                        let other = register[p as usize];
+                        Some(if *f == Unary::Sin {
+                            Inst::SinCosK(out, other, r(a), *k)
+                        } else {
+                            Inst::SinCosK(other, out, r(a), *k)
+                        })
+                    }
+                    // Pairs are scaled together; a lone one is its product, then itself.
+                    None => {
+                        code.push(Inst::MulK(out, r(a), *k));
+                        Some(Inst::Unary(out, *f, out))
+                    }
+                },
                 Node::Select3(a, b, c) => Some(Inst::Select3(out, [r(a), r(b), r(c)])),
                 Node::Select4(a, b, c, d) => Some(Inst::Select4(out, [r(a), r(b), r(c), r(d)])),
                 Node::Min(v) => add_rare(Rare::Min(list(v))),
@@ -618,12 +636,23 @@ impl Program {
                     r[at(s)] = sin;
                     r[at(c)] = cos;
                 }
+                Inst::SinCosK(s, c, a, k) => {
+                    let (sin, cos) = fast_math::sin_cos(r[at(a)] * k);
+                    r[at(s)] = sin;
+                    r[at(c)] = cos;
+                }
                 Inst::Add(o, a, b) => r[at(o)] = r[at(a)] + r[at(b)],
                 Inst::Sub(o, a, b) => r[at(o)] = r[at(a)] - r[at(b)],
                 Inst::Mul(o, a, b) => r[at(o)] = r[at(a)] * r[at(b)],
                 Inst::Div(o, a, b) => r[at(o)] = r[at(a)] / r[at(b)],
                 Inst::MulAdd(o, [a, b, c]) => r[at(o)] = r[at(a)] * r[at(b)] + r[at(c)],
                 Inst::MulSub(o, [a, b, c]) => r[at(o)] = r[at(a)] * r[at(b)] - r[at(c)],
+                Inst::MulMulAdd(o, [a, b, c, d]) => {
+                    r[at(o)] = r[at(a)] * r[at(b)] + r[at(c)] * r[at(d)]
+                }
+                Inst::Dot3(o, [a, b, c, d, e, f]) => {
+                    r[at(o)] = r[at(a)] * r[at(b)] + (r[at(c)] * r[at(d)] + r[at(e)] * r[at(f)])
+                }
                 Inst::AddK(o, a, k) => r[at(o)] = r[at(a)] + k,
                 Inst::MulK(o, a, k) => r[at(o)] = r[at(a)] * k,
                 Inst::KSub(o, a, k) => r[at(o)] = k - r[at(a)],
@@ -715,6 +744,9 @@ fn operands(node: &Node) -> Vec<u32> {
             vec![*a, *b, *c]
         }
         Node::Select4(a, b, c, d) => vec![*a, *b, *c, *d],
+        Node::MulMulAdd(v) => v.to_vec(),
+        Node::Dot3(v) => v.to_vec(),
+        Node::ScaledTrig(_, a, _) => vec![*a],
         Node::Min(v) | Node::Max(v) => v.clone(),
         Node::Call(_, v) | Node::CallPart(_, v, _) | Node::Internal(_, v) => v.clone(),
         Node::Sum {
@@ -742,10 +774,8 @@ fn live_nodes(nodes: &[Node], result: u32, params: usize) -> Vec<bool> {
     live
 }
 
-/// Rewrites, in place, arithmetic with a constant operand into one node, and a sum or
-/// difference whose operand is a product used nowhere else into a multiply-add. The
-/// arithmetic is the same, operation for operation, so values do not change.
-fn fuse(nodes: &mut [Node], live: &[bool], result: u32) {
+/// How many times each value is read by the live nodes, the result counting as one.
+fn use_counts(nodes: &[Node], live: &[bool], result: u32) -> Vec<u32> {
     let mut uses = vec![0u32; nodes.len()];
     uses[result as usize] += 1;
     for (i, node) in nodes.iter().enumerate() {
@@ -755,6 +785,15 @@ fn fuse(nodes: &mut [Node], live: &[bool], result: u32) {
             }
         }
     }
+    uses
+}
+
+/// Rewrites, in place, arithmetic with a constant operand into one node, and a sum or
+/// difference whose operand is a product used nowhere else into a multiply-add (a sum of
+/// two or three such products into one node). The arithmetic is the same, operation for
+/// operation, so values do not change.
+fn fuse(nodes: &mut [Node], live: &[bool], result: u32) {
+    let mut uses = use_counts(nodes, live, result);
     let constant = |nodes: &[Node], i: u32| match nodes[i as usize] {
         Node::Const(v) => Some(v),
         _ => None,
@@ -782,9 +821,19 @@ fn fuse(nodes: &mut [Node], live: &[bool], result: u32) {
             Some((Node::WithConstant(op, b, k, swapped), None))
         } else if op == Binary::Add {
             if let Some((x, y)) = product(nodes, &uses, a) {
-                Some((Node::MulAdd(x, y, b), Some(a)))
+                let (node, inner) = sum_of_products(nodes, &uses, x, y, b);
+                if let Some(inner) = inner {
+                    uses[inner as usize] = 0;
+                }
+                Some((node, Some(a)))
+            } else if let Some((x, y)) = product(nodes, &uses, b) {
+                let (node, inner) = sum_of_products(nodes, &uses, x, y, a);
+                if let Some(inner) = inner {
+                    uses[inner as usize] = 0;
+                }
+                Some((node, Some(b)))
             } else {
-                product(nodes, &uses, b).map(|(x, y)| (Node::MulAdd(x, y, a), Some(b)))
+                None
             }
         } else if op == Binary::Sub {
             product(nodes, &uses, a).map(|(x, y)| (Node::MulSub(x, y, b), Some(a)))
@@ -800,6 +849,61 @@ fn fuse(nodes: &mut [Node], live: &[bool], result: u32) {
     }
 }
 
+/// x·y + b as one node, and the node it swallowed: b itself when it is a product or a sum
+/// of two used only here. The operations and their order stay those of the expression.
+fn sum_of_products(nodes: &[Node], uses: &[u32], x: u32, y: u32, b: u32) -> (Node, Option<u32>) {
+    match (&nodes[b as usize], uses[b as usize]) {
+        (Node::Binary(Binary::Mul, c, d), 1) => (Node::MulMulAdd([x, y, *c, *d]), Some(b)),
+        (Node::MulMulAdd([c, d, e, f]), 1) => (Node::Dot3([x, y, *c, *d, *e, *f]), Some(b)),
+        _ => (Node::MulAdd(x, y, b), None),
+    }
+}
+
+/// Rewrites a sine and cosine pair of one product a·k, used by nothing else, into the
+/// pair of that product, so that the product is one instruction with them.
+fn scale_trig_pairs(nodes: &mut [Node], live: &[bool], result: u32) {
+    let uses = use_counts(nodes, live, result);
+    for (sin, cos) in trig_pairs(nodes, live) {
+        let Node::Unary(_, a) = nodes[sin] else {
+            continue;
+        };
+        if let Node::WithConstant(Binary::Mul, x, k, _) = nodes[a as usize]
+            && uses[a as usize] == 2
+        {
+            nodes[sin] = Node::ScaledTrig(Unary::Sin, x, k);
+            nodes[cos] = Node::ScaledTrig(Unary::Cos, x, k);
+        }
+    }
+}
+
+/// The live sines and cosines of one argument (or of one argument times one constant),
+/// as (sine, cosine) pairs of node indices.
+fn trig_pairs(nodes: &[Node], live: &[bool]) -> Vec<(usize, usize)> {
+    // By argument (and the bits of its constant factor): the first sine and cosine.
+    type Pair = (Option<usize>, Option<usize>);
+    let mut trig: HashMap<(u32, Option<u64>), Pair> = HashMap::new();
+    for (i, node) in nodes.iter().enumerate() {
+        let (f, key) = match node {
+            _ if !live[i] => continue,
+            Node::Unary(f @ (Unary::Sin | Unary::Cos), a) => (*f, (*a, None)),
+            Node::ScaledTrig(f, a, k) => (*f, (*a, Some(k.to_bits()))),
+            _ => continue,
+        };
+        let entry = trig.entry(key).or_default();
+        if f == Unary::Sin {
+            entry.0.get_or_insert(i);
+        } else {
+            entry.1.get_or_insert(i);
+        }
+    }
+    trig.into_values()
+        .filter_map(|pair| match pair {
+            (Some(sin), Some(cos)) => Some((sin, cos)),
+            _ => None,
+        })
+        .collect()
+}
+
 /// 1/k when it is exact (k a power of two), so that a division by k can be a product.
 fn exact_reciprocal(k: f64) -> Option<f64> {
     const MANTISSA: u64 = (1 << 52) - 1;
@@ -813,6 +917,12 @@ mod tests {
 
     fn code(params: &[&str], code: Vec<Op>) -> Function {
         Function::code(params.iter().map(|p| p.to_string()).collect(), code)
+    }
+
+    /// Checks how many of the program's instructions `pick` picks.
+    fn assert_count(program: &Program, pick: fn(&Inst) -> bool, want: usize) {
+        let got = program.code.iter().filter(|i| pick(i)).count();
+        assert_eq!(got, want, "{:#?}", program.code);
     }
 
     #[test]
@@ -913,22 +1023,42 @@ mod tests {
         for p in [[0.3, -1.2, 2.5], [10.0, 0.0, -4.0], [-7.5, 3.3, 1e-3]] {
             assert_eq!(program.eval(&p).to_bits(), f.eval(&p).to_bits(), "{p:?}");
         }
-        let count = |pick: fn(&Inst) -> bool| program.code.iter().filter(|i| pick(i)).count();
-        assert_eq!(
-            count(|i| matches!(i, Inst::Const(..))),
-            0,
-            "{:#?}",
-            program.code
-        );
-        assert_eq!(
-            count(|i| matches!(i, Inst::MulAdd(..))),
-            1,
-            "{:#?}",
-            program.code
-        );
+        assert_count(&program, |i| matches!(i, Inst::Const(..)), 0);
+        assert_count(&program, |i| matches!(i, Inst::MulAdd(..)), 1);
         // x / 4 is x · 0.25, exactly; 3 / x stays a division.
-        assert_eq!(count(|i| matches!(i, Inst::MulK(_, _, k) if *k == 0.25)), 1);
-        assert_eq!(count(|i| matches!(i, Inst::KDiv(..))), 1);
+        assert_count(
+            &program,
+            |i| matches!(i, Inst::MulK(_, _, k) if *k == 0.25),
+            1,
+        );
+        assert_count(&program, |i| matches!(i, Inst::KDiv(..)), 1);
+    }
+
+    #[test]
+    fn scaled_trig_pairs_and_sums_of_products_are_single_instructions() {
+        // sin(2x)·cos(2y) + sin(2y)·cos(2z) + sin(2z)·cos(2x) + (x·x + y·y + z·z)
+        let trig =
+            |f: Unary, axis: u8| vec![Op::Const(2.0), Op::Param(axis), Op::Mul, Op::Unary(f)];
+        let mut ops = Vec::new();
+        for (s, c) in [(0, 1), (1, 2), (2, 0)] {
+            ops.extend(trig(Unary::Sin, s));
+            ops.extend(trig(Unary::Cos, c));
+            ops.push(Op::Mul);
+        }
+        ops.extend([Op::Add, Op::Add]);
+        for axis in 0..3 {
+            ops.extend([Op::Param(axis), Op::Param(axis), Op::Mul]);
+        }
+        ops.extend([Op::Add, Op::Add, Op::Add]);
+        let f = code(&["x", "y", "z"], ops);
+        let program = Program::compile(&f, 3).unwrap();
+        for p in [[0.3, -1.2, 2.5], [10.0, 0.0, -4.0], [-7.5, 3.3, 3.3]] {
+            let (want, got) = (f.eval(&p), program.eval(&p));
+            assert!((want - got).abs() < 1e-12, "{p:?}: {want} {got}");
+        }
+        assert_count(&program, |i| matches!(i, Inst::SinCosK(..)), 3);
+        assert_count(&program, |i| matches!(i, Inst::Dot3(..)), 2);
+        assert_count(&program, |_| true, 6);
     }
 
     #[test]
