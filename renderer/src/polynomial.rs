@@ -221,14 +221,9 @@ fn cubic_roots(a: f64, b: f64, c: f64) -> ([f64; 3], usize) {
     if r * r < q * q * q {
         let theta = (r / (q * q * q).sqrt()).clamp(-1.0, 1.0).acos();
         let m = -2.0 * q.sqrt();
-        (
-            [
-                m * (theta / 3.0).cos() - shift,
-                m * ((theta + 2.0 * std::f64::consts::PI) / 3.0).cos() - shift,
-                m * ((theta - 2.0 * std::f64::consts::PI) / 3.0).cos() - shift,
-            ],
-            3,
-        )
+        let (sin, cos) = fast_math::sin_cos(theta / 3.0);
+        let (above, below) = third_turns(sin, cos);
+        ([m * cos - shift, m * above - shift, m * below - shift], 3)
     } else {
         let big = -r.signum() * fast_math::cbrt(r.abs() + (r * r - q * q * q).sqrt());
         let small = if big != 0.0 { q / big } else { 0.0 };
@@ -236,16 +231,26 @@ fn cubic_roots(a: f64, b: f64, c: f64) -> ([f64; 3], usize) {
     }
 }
 
+/// cos(φ + 2π/3) and cos(φ - 2π/3) from the sine and cosine of φ: the angles of the
+/// other two roots of a cubic with three, without two more cosines.
+fn third_turns(sin: f64, cos: f64) -> (f64, f64) {
+    const HALF_ROOT_3: f64 = 0.866_025_403_784_438_6;
+    (
+        -0.5 * cos - HALF_ROOT_3 * sin,
+        -0.5 * cos + HALF_ROOT_3 * sin,
+    )
+}
+
 /// The largest real root of the monic cubic x³ + a x² + b x + c: of three, the one
-/// `cubic_roots` would find with the third angle, at the cost of one cosine instead of
-/// three.
+/// `cubic_roots` finds second, without the other two.
 fn largest_cubic_root(a: f64, b: f64, c: f64) -> f64 {
     let q = (a * a - 3.0 * b) / 9.0;
     let r = (2.0 * a * a * a - 9.0 * a * b + 27.0 * c) / 54.0;
     let shift = a / 3.0;
     if r * r < q * q * q {
         let theta = (r / (q * q * q).sqrt()).clamp(-1.0, 1.0).acos();
-        -2.0 * q.sqrt() * ((theta + 2.0 * std::f64::consts::PI) / 3.0).cos() - shift
+        let (sin, cos) = fast_math::sin_cos(theta / 3.0);
+        -2.0 * q.sqrt() * third_turns(sin, cos).0 - shift
     } else {
         let big = -r.signum() * fast_math::cbrt(r.abs() + (r * r - q * q * q).sqrt());
         let small = if big != 0.0 { q / big } else { 0.0 };
