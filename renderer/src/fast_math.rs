@@ -74,7 +74,10 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
     if x.is_nan() || x.abs() > REDUCTION_LIMIT {
         return (x.sin(), x.cos());
     }
-    let k = round(x * FRAC_2_PI);
+    // The nearest quarter turn; `floor` is one WebAssembly instruction where `round`
+    // above takes several. Halves may go either way: the remainder stays within π/4,
+    // give or take an ulp, where the series below is as accurate.
+    let k = (x * FRAC_2_PI + 0.5).floor();
     let r = ((x - k * PIO2_HIGH) - k * PIO2_MID) - k * PIO2_LOW;
     let r2 = r * r;
     // Taylor series to the 15th and 16th powers: on |r| <= π/4 the first omitted terms are
