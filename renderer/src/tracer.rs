@@ -290,12 +290,13 @@ impl<'w> Tracer<'w> {
                 opacity,
                 double_illuminate: leaf.double_illuminate,
             };
-            // The pretrace wants only the radiosity samples a camera ray's path takes.
-            let vain_pretrace = self.vain_pretrace();
-            for light in world.lights_for(leaf).filter(|_| !vain_pretrace) {
+            // The pretrace wants only the radiosity samples a camera ray's path takes, and a
+            // finish that shows no light (`ambient 1 diffuse 0`) needs no shadow rays.
+            let unlit = self.vain_pretrace() || !shows_light(finish);
+            for light in world.lights_for(leaf).filter(|_| !unlit) {
                 own += self.direct_light(light, &shading);
             }
-            for &(light, from) in photon_lights.iter().filter(|_| !vain_pretrace) {
+            for &(light, from) in photon_lights.iter().filter(|_| !unlit) {
                 let lit = Lit {
                     colour: light,
                     direction: from,
@@ -722,6 +723,12 @@ struct Lit {
     /// Unit vector towards where the light comes from.
     direction: DVec3,
     highlights: bool,
+}
+
+/// Whether light sources can show on a surface with this finish at all: through diffuse
+/// (front or back) or a highlight; `Tracer::lit` gives nothing otherwise.
+fn shows_light(finish: &Finish) -> bool {
+    finish.diffuse > 0.0 || finish.diffuse_back > 0.0 || finish.phong > 0.0 || finish.specular > 0.0
 }
 
 /// Whether a surface facing `normal` takes light from `direction`: `Some(false)` on its
