@@ -249,8 +249,11 @@ impl<'w> Tracer<'w> {
         let reflections = self.reflections.len();
         let mut photon_lights = std::mem::take(&mut self.photon_lights);
         photon_lights.clear();
+        // Gathered photons light a surface as light sources do: not at all where no layer's
+        // finish shows light.
         if let Some(photons) = &world.photons
             && leaf.photons.collect()
+            && layers.iter().any(|layer| shows_light(&layer.finish))
         {
             photons.lights_at(p, raw_normal, &mut self.gather_scratch, &mut photon_lights);
         }
