@@ -100,7 +100,7 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
     if let Some(light) = scene
         .lights
         .iter()
-        .find(|l| l.projected_through.is_some() && (l.photons.refraction || l.photons.reflection))
+        .find(|l| l.projected_through.is_some() && l.photons.shoots())
         && photons.is_some()
     {
         return Err(BuildError {

@@ -20,7 +20,7 @@ use crate::photons::{GatherScratch, PhotonMap};
 use crate::ray::{Ray, RayKind};
 use crate::refraction::{self, Inside};
 use crate::texture_point::TexturePoint;
-use analysis::scene::Finish;
+use analysis::scene::{Finish, LightPhotons};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -543,20 +543,22 @@ impl<'w> Tracer<'w> {
         }
     }
 
-    /// Whether shadow rays towards `light` stop at refracting photon targets.
-    fn photons_stop(&self, light: &Light) -> bool {
-        self.world.photons.is_some() && light.photons.refraction
+    /// The photons settings of `light` when shadow rays towards it stop at the photon
+    /// targets that refract its photons: in scenes with photons.
+    fn photons_stop<'l>(&self, light: &'l Light) -> Option<&'l LightPhotons> {
+        self.world.photons.is_some().then_some(&light.photons)
     }
 
     /// `colour` after the shadow ray from `p` along `direction` over `distance`.
-    /// `photons_stop`: refracting photon targets stop the light, whose photons bring it.
+    /// `photons_stop`: the targets that refract this light's photons stop the light, whose
+    /// photons bring it.
     fn filtered(
         &mut self,
         p: DVec3,
         direction: DVec3,
         distance: f64,
         colour: DVec3,
-        photons_stop: bool,
+        photons_stop: Option<&LightPhotons>,
     ) -> DVec3 {
         let mut colour = colour;
         let mut origin = p;
@@ -590,7 +592,7 @@ impl<'w> Tracer<'w> {
                 return colour;
             };
             let leaf: &'w Leaf = hit.leaf;
-            if photons_stop && leaf.photons.stops_light_for_photons() {
+            if photons_stop.is_some_and(|light| leaf.photons.stops_light_for_photons(light)) {
                 return DVec3::ZERO;
             }
             if !leaf.transmits {

@@ -128,8 +128,8 @@ impl Evaluator<'_> {
                     let multiplier = if has_value { self.float()? } else { 1.0 };
                     photons.target = (multiplier > 0.0).then_some(multiplier);
                 }
-                REFRACTION_KW => photons.refraction = self.optional_bool()?,
-                REFLECTION_KW => photons.reflection = self.optional_bool()?,
+                REFRACTION_KW => photons.refraction = Some(self.optional_bool()?),
+                REFLECTION_KW => photons.reflection = Some(self.optional_bool()?),
                 COLLECT_KW => photons.collect = self.optional_bool()?,
                 PASS_THROUGH_KW => photons.pass_through = Some(self.optional_bool()?),
                 SPLIT_UNION_KW => photons.split_union = self.optional_bool()?,
@@ -153,8 +153,8 @@ impl Evaluator<'_> {
             let token = self.next()?;
             match token.kind {
                 R_BRACE => return Ok(()),
-                REFRACTION_KW => photons.refraction = self.optional_bool()?,
-                REFLECTION_KW => photons.reflection = self.optional_bool()?,
+                REFRACTION_KW => photons.refraction = Some(self.optional_bool()?),
+                REFLECTION_KW => photons.reflection = Some(self.optional_bool()?),
                 AREA_LIGHT_KW => photons.area_light = self.optional_bool()?,
                 _ => {
                     return Err(self.error_at(
@@ -250,7 +250,7 @@ mod tests {
         );
         let expected = ObjectPhotons {
             target: Some(0.5),
-            refraction: true,
+            refraction: Some(true),
             collect: false,
             ..ObjectPhotons::default()
         };
@@ -261,20 +261,21 @@ mod tests {
         assert!(children.iter().all(|c| c.photons == expected));
         let second = s.objects[1].photons;
         assert_eq!(second.target, Some(1.0));
-        assert!(second.reflection && !second.refraction);
+        assert_eq!((second.reflection, second.refraction), (Some(true), None));
         assert_eq!(second.pass_through, Some(true));
         assert!(!s.objects[2].photons.split_union);
     }
 
     #[test]
-    fn lights_shoot_both_kinds_unless_told() {
+    fn lights_leave_unsaid_kinds_to_the_objects() {
         let s = evaluate_ok(
             "light_source { 0, 1 }
              light_source { 0, 1 photons { refraction off area_light } }",
         );
         assert_eq!(s.lights[0].photons, LightPhotons::default());
-        assert!(s.lights[0].photons.refraction && s.lights[0].photons.reflection);
+        assert!(s.lights[0].photons.shoots());
         let second = s.lights[1].photons;
-        assert!(!second.refraction && second.reflection && second.area_light);
+        assert_eq!((second.refraction, second.reflection), (Some(false), None));
+        assert!(second.area_light && second.shoots());
     }
 }

@@ -67,9 +67,10 @@ pub struct ObjectPhotons {
     /// `target [multiplier]`: photons are aimed at the object, at the global spacing times
     /// the multiplier.
     pub target: Option<f64>,
-    /// Whether photons go on through the surface, and off it.
-    pub refraction: bool,
-    pub reflection: bool,
+    /// Whether photons go on through the surface, and off it: `None` when the block does
+    /// not say, which leaves it to the light (see [`photons_interact`]).
+    pub refraction: Option<bool>,
+    pub reflection: Option<bool>,
     /// Whether photons that reach the surface after a reflection or refraction are kept
     /// there and light it.
     pub collect: bool,
@@ -84,8 +85,8 @@ impl Default for ObjectPhotons {
     fn default() -> Self {
         ObjectPhotons {
             target: None,
-            refraction: false,
-            reflection: false,
+            refraction: None,
+            reflection: None,
             collect: true,
             pass_through: None,
             split_union: true,
@@ -93,22 +94,31 @@ impl Default for ObjectPhotons {
     }
 }
 
-/// `photons { }` in a light source: which photons it shoots. Lights shoot both kinds
-/// unless told otherwise.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// `photons { }` in a light source: which photons it shoots. `None` when the block does
+/// not say, which leaves it to each object (see [`photons_interact`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct LightPhotons {
-    pub refraction: bool,
-    pub reflection: bool,
+    pub refraction: Option<bool>,
+    pub reflection: Option<bool>,
     /// Photons leave from the points of the area light's grid instead of its centre.
     pub area_light: bool,
 }
 
-impl Default for LightPhotons {
-    fn default() -> Self {
-        LightPhotons {
-            refraction: true,
-            reflection: true,
-            area_light: false,
-        }
+impl LightPhotons {
+    /// Whether the light may shoot photons at all: not both kinds turned off.
+    pub fn shoots(&self) -> bool {
+        self.refraction != Some(false) || self.reflection != Some(false)
+    }
+}
+
+/// Whether photons from a light refract (or reflect) at an object, from the object's and
+/// the light's settings for that kind: an `off` on either side stops them, otherwise an
+/// `on` on either side lets them, and nothing said means no. POV-Ray 3.7's renders show
+/// this: a target without `refraction` refracts the photons of a light with
+/// `refraction on`, and a mirror with no photons block reflects a `reflection on` light's.
+pub fn photons_interact(object: Option<bool>, light: Option<bool>) -> bool {
+    match (object, light) {
+        (Some(false), _) | (_, Some(false)) => false,
+        (object, light) => object == Some(true) || light == Some(true),
     }
 }

@@ -20,7 +20,9 @@ use crate::bounds::Aabb;
 use crate::build::BuildError;
 use crate::object::Object;
 use crate::tracer::World;
-use analysis::scene::{self, ObjectPhotons, PhotonDensity, Photons};
+use analysis::scene::{
+    self, LightPhotons, ObjectPhotons, PhotonDensity, Photons, photons_interact,
+};
 pub use gather::GatherScratch;
 use gather::{Estimate, Gather};
 use glam::{DVec3, Vec3};
@@ -28,15 +30,18 @@ use kdtree::KdTree;
 use shoot::Shooting;
 
 /// What a surface does with photons, from its object's photons block: one bit each, so
-/// that a leaf stays small in scenes of a hundred thousand objects.
+/// that a leaf stays small in scenes of a hundred thousand objects. Refraction and
+/// reflection take two bits each, for `on`, `off` and unsaid, which the light decides.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SurfacePhotons(u8);
 
 const TARGET: u8 = 1;
-const REFRACTION: u8 = 2;
-const REFLECTION: u8 = 4;
+const REFRACTION_ON: u8 = 2;
+const REFLECTION_ON: u8 = 4;
 const COLLECT: u8 = 8;
 const PASS_THROUGH: u8 = 16;
+const REFRACTION_OFF: u8 = 32;
+const REFLECTION_OFF: u8 = 64;
 
 impl Default for SurfacePhotons {
     fn default() -> Self {
@@ -48,13 +53,28 @@ impl SurfacePhotons {
     /// `no_shadow` objects let photons pass unless their block says otherwise.
     pub fn from_scene(photons: &ObjectPhotons, no_shadow: bool) -> SurfacePhotons {
         let bit = |on: bool, bit: u8| if on { bit } else { 0 };
+        let said = |value: Option<bool>, on: u8, off: u8| match value {
+            Some(true) => on,
+            Some(false) => off,
+            None => 0,
+        };
         SurfacePhotons(
             bit(photons.target.is_some(), TARGET)
-                | bit(photons.refraction, REFRACTION)
-                | bit(photons.reflection, REFLECTION)
+                | said(photons.refraction, REFRACTION_ON, REFRACTION_OFF)
+                | said(photons.reflection, REFLECTION_ON, REFLECTION_OFF)
                 | bit(photons.collect, COLLECT)
                 | bit(photons.pass_through.unwrap_or(no_shadow), PASS_THROUGH),
         )
+    }
+
+    fn said(self, on: u8, off: u8) -> Option<bool> {
+        if self.0 & on != 0 {
+            Some(true)
+        } else if self.0 & off != 0 {
+            Some(false)
+        } else {
+            None
+        }
     }
 
     /// Photons are aimed at the object.
@@ -62,14 +82,14 @@ impl SurfacePhotons {
         self.0 & TARGET != 0
     }
 
-    /// Photons go on through the surface.
-    pub fn refraction(self) -> bool {
-        self.0 & REFRACTION != 0
+    /// Photons from `light` go on through the surface.
+    pub fn refracts(self, light: &LightPhotons) -> bool {
+        photons_interact(self.said(REFRACTION_ON, REFRACTION_OFF), light.refraction)
     }
 
-    /// Photons go on off the surface.
-    pub fn reflection(self) -> bool {
-        self.0 & REFLECTION != 0
+    /// Photons from `light` go on off the surface.
+    pub fn reflects(self, light: &LightPhotons) -> bool {
+        photons_interact(self.said(REFLECTION_ON, REFLECTION_OFF), light.reflection)
     }
 
     /// Photons that arrive after a reflection or refraction stay and light the surface.
@@ -82,10 +102,10 @@ impl SurfacePhotons {
         self.0 & PASS_THROUGH != 0
     }
 
-    /// Whether this surface stops direct light from a light that shoots refraction
-    /// photons: the photons bring that light instead.
-    pub fn stops_light_for_photons(self) -> bool {
-        self.target() && self.refraction()
+    /// Whether this surface stops direct light from `light`: a target that refracts its
+    /// photons, which bring that light instead.
+    pub fn stops_light_for_photons(self, light: &LightPhotons) -> bool {
+        self.target() && self.refracts(light)
     }
 }
 
@@ -173,10 +193,7 @@ impl PhotonMap {
             message,
             origin: settings.origin.clone(),
         };
-        let shoots = world
-            .lights
-            .iter()
-            .any(|l| l.photons.refraction || l.photons.reflection);
+        let shoots = world.lights.iter().any(|l| l.photons.shoots());
         if targets.is_empty() || !shoots {
             return Ok(None);
         }
@@ -301,6 +318,28 @@ mod tests {
         assert!(world.photons.is_none());
         let world = build(&lens("photons { spacing 0.05 }", target), 9).unwrap();
         assert!(world.photons.is_some());
+    }
+
+    /// What POV-Ray 3.7's photon counts show: an `off` on the object or the light stops
+    /// refraction, an `on` on either side allows it, and nothing said means none.
+    #[test]
+    fn object_and_light_settings_decide_together() {
+        let refracts = |light: &str, object: &str| {
+            let scene = lens(
+                "photons { spacing 0.05 }",
+                &format!("photons {{ target {object} }}"),
+            )
+            .replace(
+                "<0, 10, 0> rgb 1",
+                &format!("<0, 10, 0> rgb 1 photons {{ {light} }}"),
+            );
+            build(&scene, 9).unwrap().photons.is_some()
+        };
+        assert!(!refracts("", ""));
+        assert!(refracts("", "refraction on"));
+        assert!(refracts("refraction on", ""));
+        assert!(!refracts("refraction off", "refraction on"));
+        assert!(!refracts("refraction on", "refraction off"));
     }
 
     #[test]

@@ -151,7 +151,7 @@ pub fn shoot_all(
     };
     let mut shot = 0;
     for (l, light) in world.lights.iter().enumerate() {
-        if !(light.photons.refraction || light.photons.reflection) {
+        if !light.photons.shoots() {
             continue;
         }
         for (t, target) in targets.iter().enumerate() {
@@ -171,7 +171,7 @@ pub fn count_shots(world: &World, targets: &[Target], shooting: &Shooting) -> u6
     let mut scratch = Vec::new();
     let mut total = 0;
     for light in &world.lights {
-        if !(light.photons.refraction || light.photons.reflection) {
+        if !light.photons.shoots() {
             continue;
         }
         for target in targets {
@@ -353,8 +353,8 @@ impl<'w> Shooter<'w, '_> {
             self.store(point, power, ray.direction, travel.path)?;
         }
         let travel = Travel { power, ..travel };
-        let refracts = leaf.photons.refraction() && light.photons.refraction;
-        let reflects = leaf.photons.reflection() && light.photons.reflection;
+        let refracts = leaf.photons.refracts(&light.photons);
+        let reflects = leaf.photons.reflects(&light.photons);
         if refracts || reflects {
             self.scatter(light, &ray, &hit, point, travel, inside, refracts, reflects)?;
         }
