@@ -307,7 +307,8 @@ fn wrong_versions_fail(name: &str, changes: &[(&str, &str, &str)]) {
 /// The light-transport scenes' thresholds catch wrong light: the dispersing prism's
 /// (blurred by 2 pixels, as photons are stochastic) a spectrum that is missing or white,
 /// fog-ground's a fog thinning a little faster or along the untilted up direction,
-/// rainbow's a bow one degree wider or arcs fading over other angles.
+/// rainbow's a bow one degree wider or arcs fading over other angles, photons-in-media's a
+/// beam without its media photons or in a medium that scatters 30% less.
 #[test]
 fn wrong_light_transport_fails_the_thresholds() {
     let photons = "photons { count 40000 gather 15, 60 autostop 0 jitter 0.4 }";
@@ -330,6 +331,17 @@ fn wrong_light_transport_fails_the_thresholds() {
         &[
             ("a wider bow", "angle 42", "angle 43"),
             ("other fading", "falloff_angle 90", "falloff_angle 120"),
+        ],
+    );
+    wrong_versions_fail(
+        "photons-in-media",
+        &[
+            ("no media photons", "media 60, 1", ""),
+            (
+                "weaker scattering",
+                "rgb 0.35 extinction",
+                "rgb 0.25 extinction",
+            ),
         ],
     );
 }

@@ -71,6 +71,7 @@ impl Evaluator<'_> {
                 EMISSION_KW => media.emission = self.scene_colour()?.rgb,
                 SCATTERING_KW => media.scattering = Some(self.scattering()?),
                 DENSITY_KW => media.density.push(self.density_body()?),
+                COLLECT_KW => media.collect = self.optional_bool()?,
                 kind if Self::starts_transform(kind) => {
                     let t = self.transformation(&token)?;
                     transform_media(&mut media, &t);

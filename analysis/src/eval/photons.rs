@@ -4,8 +4,14 @@
 
 use super::tokens::Token;
 use super::{Evaluator, Result};
-use crate::scene::{LightPhotons, Object, ObjectPhotons, PhotonDensity, Photons, Shape};
+use crate::scene::{
+    LightPhotons, MediaPhotons, Object, ObjectPhotons, PhotonDensity, Photons, Shape,
+};
 use syntax::SyntaxKind::{self, *};
+
+/// The most photons one stretch of media gets from one photon: a memory budget, far
+/// above the 100 POV-Ray's documentation suggests.
+const MAX_MEDIA_STEPS: u32 = 10_000;
 
 /// The keywords of an object's photons block, which end `target`'s optional multiplier.
 const OBJECT_ITEMS: &[SyntaxKind] = &[
@@ -66,7 +72,19 @@ impl Evaluator<'_> {
                     photons.expand_min = self.int()?.max(0) as u32;
                 }
                 RADIUS_KW => self.photon_radius(&mut photons)?,
-                MEDIA_KW => return Err(self.unsupported(&token, "media photons")),
+                MEDIA_KW => {
+                    let max_steps = self.int()?;
+                    let factor = if self.eat(COMMA)? { self.float()? } else { 1.0 };
+                    if !(factor > 0.0 && factor.is_finite()) {
+                        return Err(
+                            self.error_at(&token, "the media photon factor must be positive")
+                        );
+                    }
+                    photons.media = (max_steps > 0).then_some(MediaPhotons {
+                        max_steps: max_steps.min(i64::from(MAX_MEDIA_STEPS)) as u32,
+                        factor,
+                    });
+                }
                 SAVE_FILE_KW | LOAD_FILE_KW => {
                     return Err(self.unsupported(
                         &token,
@@ -89,29 +107,39 @@ impl Evaluator<'_> {
     /// `radius [gather_radius] [, multiplier [, media_radius [, media_multiplier]]]`, every
     /// part optional: `radius , 0.5` only scales the estimated radius.
     fn photon_radius(&mut self, photons: &mut Photons) -> Result<()> {
-        let first = self.next()?;
-        let leading_comma = first.kind == COMMA;
-        self.unget(first);
-        if !leading_comma {
-            let radius = self.float()?;
-            photons.radius = (radius > 0.0).then_some(radius);
+        let [radius, multiplier, media_radius, media_multiplier] = self.sparse_floats()?;
+        let positive = |v: Option<f64>| v.filter(|v| *v > 0.0);
+        if let Some(radius) = radius {
+            photons.radius = positive(Some(radius));
         }
-        if !self.eat(COMMA)? {
-            return Ok(());
+        if let Some(radius) = media_radius {
+            photons.media_radius = positive(Some(radius));
         }
-        let multiplier = self.float()?;
-        if multiplier > 0.0 {
-            photons.radius_multiplier = multiplier;
+        if let Some(m) = positive(multiplier) {
+            photons.radius_multiplier = m;
         }
-        // The media radius and its multiplier only matter for media photons, which a
-        // `media` item would have refused.
-        for _ in 0..2 {
-            if !self.eat(COMMA)? {
-                break;
-            }
-            self.float()?;
+        if let Some(m) = positive(media_multiplier) {
+            photons.media_radius_multiplier = m;
         }
         Ok(())
+    }
+
+    /// Up to `N` comma-separated numbers, any of which may be left out before its comma
+    /// (`, 0.5`): `None` for each left out or not reached.
+    fn sparse_floats<const N: usize>(&mut self) -> Result<[Option<f64>; N]> {
+        let mut values = [None; N];
+        for (i, value) in values.iter_mut().enumerate() {
+            if i > 0 && !self.eat(COMMA)? {
+                break;
+            }
+            let next = self.next()?;
+            let left_out = next.kind == COMMA;
+            self.unget(next);
+            if !left_out {
+                *value = Some(self.float()?);
+            }
+        }
+        Ok(values)
     }
 
     /// `photons { target refraction on collect off ... }` in an object, after `photons`.
@@ -185,13 +213,14 @@ pub(super) fn spread_to_parts(object: &mut Object) {
 #[cfg(test)]
 mod tests {
     use crate::eval::tests::{evaluate_err, evaluate_ok};
-    use crate::scene::{LightPhotons, ObjectPhotons, PhotonDensity, Photons, Shape};
+    use crate::scene::{LightPhotons, MediaPhotons, ObjectPhotons, PhotonDensity, Photons, Shape};
 
     #[test]
     fn global_block_takes_every_setting() {
         let s = evaluate_ok(
             "global_settings { photons { count 20000 gather 3, 8 jitter 0.2 max_trace_level 4
-               adc_bailout 0.01 autostop 0.5 expand_thresholds 0.3, 25 radius 0.7, 2 } }",
+               adc_bailout 0.01 autostop 0.5 expand_thresholds 0.3, 25 radius 0.7, 2, 0.3, 1.5
+               media 100, 2 } }",
         );
         let p = s.settings.photons.unwrap();
         assert_eq!(p.density, PhotonDensity::Count(20000));
@@ -205,6 +234,15 @@ mod tests {
             (0.5, 0.3, 25)
         );
         assert_eq!((p.radius, p.radius_multiplier), (Some(0.7), 2.0));
+        assert_eq!(
+            (p.media_radius, p.media_radius_multiplier),
+            (Some(0.3), 1.5)
+        );
+        let media = MediaPhotons {
+            max_steps: 100,
+            factor: 2.0,
+        };
+        assert_eq!(p.media, Some(media));
     }
 
     #[test]
@@ -213,6 +251,7 @@ mod tests {
         let p = s.settings.photons.unwrap();
         assert_eq!(p.density, PhotonDensity::Spacing(0.1));
         assert_eq!((p.radius, p.radius_multiplier), (None, 0.5));
+        assert_eq!((p.media, p.media_radius), (None, None));
         let defaults = Photons::default();
         assert_eq!((p.gather_min, p.gather_max, p.jitter), (20, 100, 0.4));
         assert_eq!(p.expand_min, defaults.expand_min);
@@ -227,8 +266,8 @@ mod tests {
                 "not supported yet: photon map files (save_file)",
             ),
             (
-                "photons { spacing 0.1 media 100 }",
-                "not supported yet: media photons",
+                "photons { spacing 0.1 media 100, 0 }",
+                "the media photon factor must be positive",
             ),
             ("photons { spacing 0 }", "photon spacing must be positive"),
             (

@@ -24,6 +24,8 @@ pub struct Media {
     /// The `density { }` blocks, each a pigment whose colour at a point is the density
     /// there; several multiply. None means a constant density of 1.
     pub density: Vec<Pigment>,
+    /// `collect off`: media photons are neither left in the media nor gathered there.
+    pub collect: bool,
 }
 
 impl Default for Media {
@@ -42,6 +44,7 @@ impl Default for Media {
             emission: DVec3::ZERO,
             scattering: None,
             density: Vec::new(),
+            collect: true,
         }
     }
 }

@@ -23,7 +23,9 @@ pub use colour::Colour;
 pub use light::{AreaLight, Light, LightGroup, LightKind};
 pub use media::{Media, Scattering, ScatteringKind};
 pub use object::{CsgOp, Interior, Object, ObjectFlags, Shape};
-pub use photons::{LightPhotons, ObjectPhotons, PhotonDensity, Photons, photons_interact};
+pub use photons::{
+    LightPhotons, MediaPhotons, ObjectPhotons, PhotonDensity, Photons, photons_interact,
+};
 pub use settings::{GlobalSettings, Radiosity, Subsurface};
 pub use texture::{
     BlendMap, Finish, Fractal, FractalKind, Normal, NormalKind, Pattern, PatternKind, Pigment,

@@ -38,7 +38,21 @@ pub struct Photons {
     /// the factor applied to it.
     pub radius: Option<f64>,
     pub radius_multiplier: f64,
+    /// `media max_steps [, factor]`: photons are also left in scattering media.
+    pub media: Option<MediaPhotons>,
+    /// The gather radius in media (`None` takes the surfaces' radius) and its factor.
+    pub media_radius: Option<f64>,
+    pub media_radius_multiplier: f64,
     pub origin: Origin,
+}
+
+/// `media max_steps, factor` in the global photons block: photons that cross scattering
+/// media after a reflection or refraction leave photons along the way, `factor` times the
+/// surface spacing apart, at most `max_steps` per stretch of media.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MediaPhotons {
+    pub max_steps: u32,
+    pub factor: f64,
 }
 
 impl Default for Photons {
@@ -56,6 +70,9 @@ impl Default for Photons {
             expand_min: 40,
             radius: None,
             radius_multiplier: 1.0,
+            media: None,
+            media_radius: None,
+            media_radius_multiplier: 1.0,
             origin: None,
         }
     }

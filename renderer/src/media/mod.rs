@@ -42,6 +42,7 @@ pub struct Medium {
     emission: DVec3,
     scattering: Option<Scatter>,
     density: Vec<Pigment>,
+    collect: bool,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -105,12 +106,19 @@ impl Medium {
                 extinction: s.extinction,
             }),
             density,
+            collect: media.collect,
         })
     }
 
     /// Whether the media scatters light, and so needs the lights at its samples.
     pub fn scatters(&self) -> bool {
         self.scattering.is_some_and(|s| s.colour != DVec3::ZERO)
+    }
+
+    /// Whether media photons are left in these media and gathered there: scattering media
+    /// without `collect off`.
+    pub fn collects_photons(&self) -> bool {
+        self.collect && self.scatters()
     }
 
     /// The product of the density blocks at `p` (1 without any).
@@ -293,7 +301,7 @@ fn exp(v: DVec3) -> DVec3 {
 }
 
 /// A number in 0..1 fixed by the seed and the index.
-fn unit(seed: u64, index: u32) -> f64 {
+pub(crate) fn unit(seed: u64, index: u32) -> f64 {
     let mut h = seed ^ u64::from(index).wrapping_mul(0xbf58_476d_1ce4_e5b9);
     h ^= h >> 31;
     h = h.wrapping_mul(0x94d0_49bb_1331_11eb);

@@ -9,10 +9,14 @@
 //! light that shoots refraction photons stop at such targets, as in POV-Ray, so that the
 //! light beyond them is the caustic and not the caustic on top of the straight light.
 //!
+//! With `media` in the block, photons that cross scattering media after a reflection or
+//! refraction also leave photons there, which media samples gather (`in_media`).
+//!
 //! The pass runs only for scenes with a `photons` block in `global_settings`, at quality 6
 //! and above, and only when some light shoots at some target.
 
 mod gather;
+mod in_media;
 mod kdtree;
 mod shoot;
 
@@ -26,6 +30,8 @@ use analysis::scene::{
 pub use gather::GatherScratch;
 use gather::{Estimate, Gather};
 use glam::{DVec3, Vec3};
+use in_media::Deposit;
+pub use in_media::{MediaMap, collecting, media_within};
 use kdtree::KdTree;
 use shoot::Shooting;
 
@@ -180,6 +186,8 @@ impl PhotonBudget {
 pub struct PhotonMap {
     tree: KdTree,
     gather: Gather,
+    /// The photons left in media, with `media` in the photons block.
+    pub in_media: Option<MediaMap>,
 }
 
 impl PhotonMap {
@@ -203,21 +211,44 @@ impl PhotonMap {
             autostop: settings.autostop,
             max_trace_level: settings.max_trace_level.unwrap_or(world.max_trace_level),
             adc_bailout: settings.adc_bailout.unwrap_or(world.adc_bailout),
+            media: None,
         };
         shooting.spacing = match settings.density {
             PhotonDensity::Spacing(spacing) => spacing,
             PhotonDensity::Count(count) => spacing_for(world, targets, &mut shooting, count),
         };
+        shooting.media = settings.media.map(|m| Deposit {
+            step: shooting.spacing * m.factor,
+            max_steps: m.max_steps,
+            jitter: settings.jitter,
+        });
         let budget = PhotonBudget { max: MAX_PHOTONS };
-        let mut stored = Vec::new();
-        shoot::shoot_all(world, targets, &shooting, &budget, &mut stored).map_err(fail)?;
-        if stored.is_empty() {
+        let (mut stored, mut in_media) = (Vec::new(), Vec::new());
+        shoot::shoot_all(
+            world,
+            targets,
+            &shooting,
+            &budget,
+            &mut stored,
+            &mut in_media,
+        )
+        .map_err(fail)?;
+        if stored.is_empty() && in_media.is_empty() {
             return Ok(None);
         }
         let gather = Gather::new(settings, shooting.spacing, stored.len());
+        let in_media = (!in_media.is_empty()).then(|| {
+            let radius = settings.media_radius.unwrap_or(f64::from(gather.radius));
+            MediaMap::new(
+                in_media,
+                radius * settings.media_radius_multiplier,
+                gather.max,
+            )
+        });
         Ok(Some(PhotonMap {
             tree: KdTree::build(stored),
             gather,
+            in_media,
         }))
     }
 

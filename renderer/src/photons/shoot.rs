@@ -23,6 +23,7 @@
 //! Jitter comes from a hash of the light, the target and the photon's place in the
 //! spiral, so the map is the same on every run, thread count and platform.
 
+use super::in_media::{self, Deposit};
 use super::kdtree::Photon;
 use super::{PhotonBudget, Target};
 use crate::dispersion::Spectra;
@@ -43,6 +44,8 @@ pub struct Shooting {
     pub autostop: f64,
     pub max_trace_level: u32,
     pub adc_bailout: f64,
+    /// How photons are left in media; `None` without `media` in the photons block.
+    pub media: Option<Deposit>,
 }
 
 /// The spiral of one light at one target: where photons leave from and how they spread.
@@ -58,6 +61,8 @@ struct Spiral {
     parallel: bool,
     /// Where parallel photons start: the plane through the light, across the axis.
     origin: DVec3,
+    /// The target's spacing multiplier.
+    multiplier: f64,
 }
 
 impl Spiral {
@@ -75,6 +80,7 @@ impl Spiral {
                 rings: (radius / step).floor() as u32,
                 parallel: true,
                 origin,
+                multiplier: target.spacing_multiplier,
             });
         }
         let to_centre = centre - light.position;
@@ -95,6 +101,7 @@ impl Spiral {
             rings: (angle / step).floor() as u32,
             parallel: false,
             origin: light.position,
+            multiplier: target.spacing_multiplier,
         })
     }
 
@@ -140,11 +147,14 @@ pub fn shoot_all(
     shooting: &Shooting,
     budget: &PhotonBudget,
     stored: &mut Vec<Photon>,
+    in_media: &mut Vec<Photon>,
 ) -> Result<u64, String> {
     let mut shooter = Shooter {
         world,
         shooting,
         stored,
+        in_media,
+        media_step: 0.0,
         scratch: Vec::new(),
         spectra: Spectra::default(),
         budget,
@@ -244,6 +254,10 @@ struct Shooter<'w, 's> {
     world: &'w World,
     shooting: &'s Shooting,
     stored: &'s mut Vec<Photon>,
+    /// Photons left in media.
+    in_media: &'s mut Vec<Photon>,
+    /// The distance between media photons for the spiral being shot.
+    media_step: f64,
     scratch: Vec<Hit<'w>>,
     spectra: Spectra,
     budget: &'s PhotonBudget,
@@ -255,6 +269,9 @@ impl<'w> Shooter<'w, '_> {
         let mut shot = 0;
         let mut hit_once = false;
         let colour = light.colour * spiral.share();
+        if let Some(deposit) = &self.shooting.media {
+            self.media_step = deposit.step * spiral.multiplier;
+        }
         for k in 0..=spiral.rings {
             let size = spiral.ring_size(k);
             let mut ring_hit = false;
@@ -310,6 +327,7 @@ impl<'w> Shooter<'w, '_> {
         }
         let mut origin = ray.origin;
         let mut travel = travel;
+        let start = travel;
         let (hit, point) = loop {
             let q = Query::new(
                 Ray::new(origin, ray.direction),
@@ -318,6 +336,9 @@ impl<'w> Shooter<'w, '_> {
                 f64::INFINITY,
             );
             let Some(hit) = world.bvh.nearest(&q, &mut self.scratch) else {
+                if start.caustic {
+                    self.leave_in_media(&ray, None, &start, inside)?;
+                }
                 return Ok(false);
             };
             let point = q.ray.at(hit.t);
@@ -330,6 +351,9 @@ impl<'w> Shooter<'w, '_> {
             }
             origin = point;
         };
+        if start.caustic {
+            self.leave_in_media(&ray, Some(point), &start, inside)?;
+        }
         let leaf: &'w Leaf = hit.leaf;
         let mut power = travel.power;
         if !travel.caustic {
@@ -473,6 +497,50 @@ impl<'w> Shooter<'w, '_> {
         self.follow(light, ray, next, inside).map(|_| ())
     }
 
+    /// Leaves photons in the scattering media along `ray` up to `end` (`None`: a photon
+    /// leaving the scene, which crosses `max_steps` steps of atmospheric media), for a
+    /// photon setting out as `start`. Each is dimmed by the interiors' media before it,
+    /// as the photon is at a surface.
+    fn leave_in_media(
+        &mut self,
+        ray: &Ray,
+        end: Option<DVec3>,
+        start: &Travel,
+        inside: &Inside<'w>,
+    ) -> Result<(), String> {
+        let Some(deposit) = self.shooting.media else {
+            return Ok(());
+        };
+        let interiors = inside.interiors();
+        if !in_media::collecting(in_media::media_within(self.world, interiors)) {
+            return Ok(());
+        }
+        let step = self.media_step;
+        let length = match end {
+            Some(end) => end.distance(ray.origin),
+            None => step * f64::from(deposit.max_steps),
+        };
+        let direction = ray.direction.normalize_or_zero();
+        let seed = crate::media::seed(ray);
+        for (at, width) in deposit.places(length, step, seed) {
+            let p = ray.origin + direction * at;
+            let mut power = start.power * width;
+            for interior in interiors {
+                power *= interior.media_transmittance(ray.origin, p);
+            }
+            let spread = start.path.map_or(1.0, |d| media_spread(d, at));
+            let power = power * spread;
+            if !(power.is_finite() && p.is_finite()) || power.max_element() <= 0.0 {
+                continue;
+            }
+            self.budget
+                .check((self.stored.len() + self.in_media.len()) as u64 + 1)?;
+            self.in_media
+                .push(in_media::media_photon(p, power, direction));
+        }
+        Ok(())
+    }
+
     fn store(
         &mut self,
         point: DVec3,
@@ -485,13 +553,29 @@ impl<'w> Shooter<'w, '_> {
         if !(power.is_finite() && point.is_finite()) || power.max_element() <= 0.0 {
             return Ok(());
         }
-        self.budget.check(self.stored.len() as u64 + 1)?;
+        self.budget
+            .check((self.stored.len() + self.in_media.len()) as u64 + 1)?;
         self.stored.push(Photon {
             position: point.as_vec3(),
             power: power.as_vec3(),
             direction: direction.normalize_or_zero().as_vec3(),
         });
         Ok(())
+    }
+}
+
+/// The factor on the power of a media photon left `at` along a stretch of media that
+/// starts `start` from a point light: the square of the distance travelled, as for surface
+/// photons, times that distance over the distance at the start of the stretch. The second
+/// factor is what POV-Ray 3.7's renders show: its media photons brighten along a beam by
+/// the distance from the light, ×1.41 over a box from 17 to 23 units away (×1.35
+/// predicted), ×1.19 from 37 to 43 (×1.16), and not at all for parallel light.
+fn media_spread(start: f64, at: f64) -> f64 {
+    let d = start + at;
+    if start > 0.0 {
+        d * d * d / start
+    } else {
+        d * d
     }
 }
 

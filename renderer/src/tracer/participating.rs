@@ -6,6 +6,7 @@ use crate::colour::Sample;
 use crate::interior::Interior;
 use crate::light::Incoming;
 use crate::media::{self, Incident, Passage};
+use crate::photons;
 use crate::ray::{Ray, RayKind};
 use glam::DVec3;
 
@@ -61,11 +62,20 @@ impl<'w> Tracer<'w> {
                 splits.sort_by(f64::total_cmp);
             }
             let seed = media::seed(&unit);
+            // Media photons light every medium of a stretch where one of them collects.
+            let photons = world
+                .photons
+                .as_ref()
+                .and_then(|p| p.in_media.as_ref())
+                .filter(|_| photons::collecting(photons::media_within(world, &inside)));
             let interior_media = inside.iter().flat_map(|i| &i.media);
             let atmospheric = atmosphere.iter().flat_map(|a| &a.media);
             for (index, medium) in interior_media.chain(atmospheric).enumerate() {
                 let mut lighting = |p: DVec3, out: &mut Vec<Incident>| {
                     self.media_lights(p, &inside, out);
+                    if let Some(photons) = photons {
+                        photons.lights_at(p, &mut self.gather_scratch.found, out);
+                    }
                 };
                 let seed = seed ^ (index as u64 + 1).wrapping_mul(0xd6e8_feb8_6659_fd93);
                 let p = medium.passage(&unit, (0.0, depth), &splits, seed, &mut lighting);
