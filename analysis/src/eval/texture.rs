@@ -446,6 +446,16 @@ impl Evaluator<'_> {
                 arms: self.float()?,
             },
             SQUARE_KW => PatternKind::Square,
+            TILING_KW => {
+                let number = self.int()?;
+                if !(1..=27).contains(&number) {
+                    return Err(self.error_at(keyword, "the tiling number must be from 1 to 27"));
+                }
+                if !crate::pattern::tiling::supported(number as u8) {
+                    return Err(self.unsupported(keyword, &format!("tiling {number}")));
+                }
+                PatternKind::Tiling(number as u8)
+            }
             TRIANGULAR_KW => PatternKind::Triangular,
             WAVES_KW => PatternKind::Waves,
             WOOD_KW => PatternKind::Wood,
@@ -1513,6 +1523,21 @@ mod tests {
             "#declare L = {plain} {plain}
              sphere {{ 0, 1 texture {{ checker texture {{ L }} texture {{ L }} }} }}"
         ));
+    }
+
+    /// POV-Ray numbers its tilings 1 to 27 and refuses any other number; 25 to 27 are
+    /// not drawn yet.
+    #[test]
+    fn tiling_numbers_are_checked() {
+        assert_eq!(
+            evaluate_err("plane { y, 0 pigment { tiling 28 } }"),
+            "the tiling number must be from 1 to 27"
+        );
+        assert_eq!(
+            evaluate_err("plane { y, 0 pigment { tiling 25 } }"),
+            "not supported yet: tiling 25"
+        );
+        evaluate_ok("plane { y, 0 pigment { tiling 24.9 } normal { tiling 3 } }");
     }
 
     /// cutaway_textures is refused where it would change the picture, and accepted where

@@ -11,6 +11,7 @@ pub mod cells;
 mod fractal;
 pub mod inside;
 mod spiral;
+pub mod tiling;
 pub mod warp;
 pub mod waves;
 
@@ -349,6 +350,7 @@ fn blend_value(kind: &PatternKind, p: DVec3) -> f64 {
         PatternKind::Fractal(f) => fractal::value(f, p),
         PatternKind::Function(f) => f.eval(&[p.x, p.y, p.z]),
         PatternKind::Image(image) => bitmap::image_value(image, p),
+        PatternKind::Tiling(number) => tiling::value(*number, p),
         _ => 0.0,
     }
 }

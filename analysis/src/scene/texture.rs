@@ -118,6 +118,8 @@ pub enum PatternKind {
     },
     Spotted,
     Square,
+    /// `tiling N`, N from 1 to 27: one of POV-Ray's periodic tilings of the x-z plane.
+    Tiling(u8),
     Triangular,
     Waves,
     Wood,
