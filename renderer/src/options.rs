@@ -81,6 +81,8 @@ pub struct RenderOptions {
     pub bits_per_colour: Option<u8>,
     /// `Clock=n.n` / `+Kn.n`: the value of `clock` in the scene.
     pub clock: Option<f64>,
+    /// `Declare=NAME=VALUE`: floats declared before the scene is read.
+    pub declared: Vec<(String, f64)>,
 }
 
 impl Default for RenderOptions {
@@ -112,6 +114,7 @@ impl Default for RenderOptions {
             compression: None,
             bits_per_colour: None,
             clock: None,
+            declared: Vec::new(),
         }
     }
 }
@@ -247,6 +250,7 @@ impl RenderOptions {
                 self.bits_per_colour = Some(if bits > 8 { 16 } else { 8 });
             }
             "clock" => self.clock = Some(parse_number(value)?),
+            "declare" => self.declared.push(parse_declaration(value)?),
             "display" | "verbose" | "pause_when_done" | "work_threads" | "output_file_name"
             | "input_file_name" | "output_file_type" | "output_to_file" | "test_abort"
             | "test_abort_count" | "warning_level" => {}
@@ -264,6 +268,23 @@ impl RenderOptions {
             0.0
         }
     }
+}
+
+/// `NAME=VALUE` of a `Declare` option: an identifier and a number.
+fn parse_declaration(text: &str) -> Result<(String, f64), String> {
+    let Some((name, value)) = text.split_once('=') else {
+        return Err(format!("`{text}` is not NAME=VALUE"));
+    };
+    let name = name.trim();
+    let mut chars = name.chars();
+    let identifier = chars
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_');
+    if !identifier {
+        return Err(format!("`{name}` is not an identifier"));
+    }
+    Ok((name.to_string(), parse_number(value.trim())?))
 }
 
 fn parse_number(text: &str) -> Result<f64, String> {
@@ -356,20 +377,25 @@ mod tests {
     }
 
     #[test]
+    fn declarations_collect_in_order() {
+        let o = apply(&["Declare=Photons=1", "declare = Count = 2.5"]).unwrap();
+        let expected = vec![("Photons".to_string(), 1.0), ("Count".to_string(), 2.5)];
+        assert_eq!(o.declared, expected);
+    }
+
+    #[test]
     fn errors_name_the_option() {
-        assert_eq!(apply(&["+ZZ"]).unwrap_err(), "option `+ZZ`: unknown option");
-        assert_eq!(
-            apply(&["Frobnicate=1"]).unwrap_err(),
-            "option `Frobnicate=1`: unknown option"
-        );
-        assert_eq!(
-            apply(&["+R12"]).unwrap_err(),
-            "option `+R12`: `12` must be a whole number from 1 to 9"
-        );
-        assert_eq!(
-            apply(&["W640"]).unwrap_err(),
-            "option `W640`: expected `+X`, `-X` or `Name=value` form"
-        );
+        for (option, message) in [
+            ("+ZZ", "unknown option"),
+            ("Frobnicate=1", "unknown option"),
+            ("+R12", "`12` must be a whole number from 1 to 9"),
+            ("W640", "expected `+X`, `-X` or `Name=value` form"),
+            ("Declare=1x=2", "`1x` is not an identifier"),
+            ("Declare=Lights", "`Lights` is not NAME=VALUE"),
+        ] {
+            let expected = format!("option `{option}`: {message}");
+            assert_eq!(apply(&[option]).unwrap_err(), expected);
+        }
         assert!(apply(&["+Wabc"]).is_err());
     }
 

@@ -55,6 +55,7 @@ pub fn render_source(
         image_height: options.height,
         clock: options.clock.unwrap_or(0.0),
         clock_on: options.clock.is_some(),
+        declared: options.declared.clone(),
         ..EvalOptions::default()
     };
     render_source_with(main, files, options, &eval_options)

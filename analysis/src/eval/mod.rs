@@ -99,6 +99,8 @@ pub struct EvalOptions {
     /// The `#version` in force before the scene sets one (Version=... on the command line).
     pub version: Option<f64>,
     pub budgets: Budgets,
+    /// Floats declared before the scene is read (POV-Ray's `Declare=NAME=VALUE` option).
+    pub declared: Vec<(String, f64)>,
 }
 
 impl Default for EvalOptions {
@@ -115,6 +117,7 @@ impl Default for EvalOptions {
             final_clock: 1.0,
             version: None,
             budgets: Budgets::default(),
+            declared: Vec::new(),
         }
     }
 }
@@ -244,6 +247,14 @@ impl<'a> Evaluator<'a> {
         options: &'a EvalOptions,
         geometry: &'a dyn crate::geometry::Geometry,
     ) -> Self {
+        let globals: Scope = options
+            .declared
+            .iter()
+            .map(|(name, value)| {
+                let slot = std::rc::Rc::new(std::cell::RefCell::new(value::Value::Float(*value)));
+                (name.clone(), slot)
+            })
+            .collect();
         Evaluator {
             source,
             geometry,
@@ -252,7 +263,7 @@ impl<'a> Evaluator<'a> {
             file_ids: HashMap::new(),
             sources: Sources::default(),
             frames: Vec::new(),
-            scopes: vec![Scope::default()],
+            scopes: vec![globals],
             pushed: Vec::new(),
             declaring: Vec::new(),
             macro_calls_held: false,

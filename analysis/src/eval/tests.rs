@@ -479,3 +479,22 @@ Grow(4)
         "#]],
     );
 }
+
+#[test]
+fn declared_options_are_globals_the_scene_can_test_and_override() {
+    let text = "#version 3.7;\n#ifdef (Photons) #debug str(Photons, 0, 1) #end\n\
+                #declare Count = Count + 1; #debug str(Count, 0, 0)";
+    let files = MemoryFiles::new().with("scene.pov", text);
+    let options = EvalOptions {
+        declared: vec![("Photons".into(), 1.0), ("Count".into(), 2.0)],
+        ..EvalOptions::default()
+    };
+    let evaluation = evaluate("scene.pov", &files, &options);
+    assert!(!evaluation.has_errors(), "{:?}", evaluation.diagnostics);
+    let text: String = evaluation
+        .messages
+        .iter()
+        .map(|m| m.text.as_str())
+        .collect();
+    assert_eq!(text, "1.03");
+}

@@ -94,6 +94,7 @@ pub fn run(args: &RenderArgs) -> Outcome {
             final_frame: job.animation.final_frame,
             initial_clock: job.animation.initial_clock,
             final_clock: job.animation.final_clock,
+            declared: job.options.declared.clone(),
             ..EvalOptions::default()
         };
         let rendered =
