@@ -17,6 +17,7 @@ use crate::shapes::{
     Cone, Cuboid, Cylinder, Disc, Mesh, Plane, Polygon, Shape, ShapeReport, Sphere, Torus,
     Triangle, build_math_shape,
 };
+use crate::subsurface;
 use crate::tracer::{Quality, World};
 use analysis::scene::mesh::MeshGeometry;
 use analysis::scene::{self, CsgOp, Origin, Scene};
@@ -43,7 +44,7 @@ pub struct BuildSettings {
 
 pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, BuildError> {
     let mut builder = Builder {
-        subsurface: scene.settings.subsurface.is_some() && settings.quality >= 9,
+        subsurface_refusal: subsurface_refusal(scene, settings.quality),
         materials: HashMap::new(),
         default_material: None,
         lights: Vec::new(),
@@ -180,6 +181,7 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
         camera_interiors,
         radiosity: Radiosity::from_scene(scene, &quality),
         photons: None,
+        subsurface: subsurface_settings(scene, settings.quality),
     };
     if let Some(settings) = photons {
         world.photons = PhotonMap::shoot(&world, settings, &targets)?;
@@ -234,9 +236,10 @@ fn bare(object: &scene::Object) -> scene::Object {
 }
 
 struct Builder {
-    /// Whether subsurface light transport is on (`global_settings { subsurface { } }` at
-    /// quality 9 or more), which finishes with `translucency` would need.
-    subsurface: bool,
+    /// Why translucent finishes cannot be drawn in this scene, when subsurface light
+    /// transport is on (`global_settings { subsurface { } }` at quality 9 and up) with a
+    /// setting not drawn yet.
+    subsurface_refusal: Option<String>,
     /// Materials by the address of the scene texture they came from, so that objects
     /// sharing a texture share one material.
     materials: HashMap<*const scene::Texture, Arc<Material>>,
@@ -396,8 +399,12 @@ impl Builder {
         if let Some(m) = self.materials.get(&key) {
             return Ok(m.clone());
         }
-        if self.subsurface && translucent(texture) {
-            return Err(fail("not supported yet: subsurface".into()));
+        if let Some(refusal) = self
+            .subsurface_refusal
+            .as_ref()
+            .filter(|_| translucent(texture))
+        {
+            return Err(fail(refusal.clone()));
         }
         let m = Arc::new(Material::from_scene(texture).map_err(fail)?);
         self.materials.insert(key, m.clone());
@@ -710,6 +717,44 @@ impl Builder {
     }
 }
 
+/// Subsurface light transport as the tracer runs it: on only with `global_settings {
+/// subsurface { } }` and at quality 9 or more, as in POV-Ray.
+fn subsurface_settings(scene: &Scene, quality: u8) -> Option<subsurface::Settings> {
+    let s = scene
+        .settings
+        .subsurface
+        .as_ref()
+        .filter(|_| quality >= 9)?;
+    Some(subsurface::Settings {
+        samples: s.samples.0,
+        mm_per_unit: scene.settings.mm_per_unit,
+    })
+}
+
+/// What keeps translucent finishes from being drawn when subsurface light transport is
+/// on: indirect light scattering under the surface (`subsurface { radiosity on }`, or
+/// radiosity gathers seeing it with `radiosity { subsurface on }`), or more probe rays per
+/// point than the budget.
+fn subsurface_refusal(scene: &Scene, quality: u8) -> Option<String> {
+    let settings = subsurface_settings(scene, quality)?;
+    let s = scene.settings.subsurface.as_ref()?;
+    let radiosity = scene.settings.radiosity.as_ref();
+    if radiosity.is_some_and(|r| r.subsurface) {
+        return Some("not supported yet: radiosity { subsurface on }".into());
+    }
+    if radiosity.is_some() && s.radiosity {
+        return Some("not supported yet: subsurface { radiosity on }".into());
+    }
+    if settings.samples > subsurface::MAX_SAMPLES {
+        return Some(format!(
+            "subsurface samples {} exceed the limit of {} probe rays per point",
+            settings.samples,
+            subsurface::MAX_SAMPLES
+        ));
+    }
+    None
+}
+
 /// Whether a texture has a finish with subsurface `translucency`.
 fn translucent(texture: &scene::Texture) -> bool {
     match texture {
@@ -786,13 +831,16 @@ mod tests {
         assert_near(corner("background { rgb 1 }", true), [1.0, 1.0, 1.0, 1.0]);
     }
 
-    /// Subsurface light transport is refused, with where it was asked for, until it is
-    /// drawn; without `global_settings { subsurface { } }` it is off, as in POV-Ray.
+    /// Subsurface light transport is drawn where `global_settings { subsurface { } }` asks
+    /// for it; what it cannot draw yet (indirect light scattering under the surface) and
+    /// probe counts past the budget are refused, with where a finish asked for it.
     #[test]
-    fn subsurface_is_refused_where_a_finish_asks_for_it() {
+    fn subsurface_refuses_only_what_it_cannot_draw() {
         let render = |global: &str| {
             let text = format!(
                 "#version 3.7; global_settings {{ {global} }}
+                 light_source {{ <2, 3, -4> rgb 1 }}
+                 camera {{ location -3 * z look_at 0 }}
                  sphere {{ 0, 1 finish {{ subsurface {{ translucency 0.5 }} }} }}"
             );
             let files = MemoryFiles::new().with("scene.pov", text);
@@ -803,16 +851,33 @@ mod tests {
             };
             render_source("scene.pov", &files, &options)
         };
-        let failure = render("subsurface { }").unwrap_err();
-        let errors: Vec<_> = failure
-            .diagnostics
-            .iter()
-            .filter(|d| d.is_error())
-            .collect();
-        assert_eq!(errors.len(), 1);
-        assert_eq!(errors[0].message, "not supported yet: subsurface");
-        // At the sphere that asks for it.
-        assert!(!errors[0].span.range.is_empty());
         assert!(render("").is_ok());
+        assert!(render("subsurface { }").is_ok());
+        assert!(render("subsurface { radiosity on }").is_ok());
+        for (global, message) in [
+            (
+                "radiosity { } subsurface { radiosity on }",
+                "not supported yet: subsurface { radiosity on }",
+            ),
+            (
+                "radiosity { subsurface on } subsurface { }",
+                "not supported yet: radiosity { subsurface on }",
+            ),
+            (
+                "subsurface { samples 5000, 1 }",
+                "subsurface samples 5000 exceed the limit of 4096 probe rays per point",
+            ),
+        ] {
+            let failure = render(global).unwrap_err();
+            let errors: Vec<_> = failure
+                .diagnostics
+                .iter()
+                .filter(|d| d.is_error())
+                .collect();
+            assert_eq!(errors.len(), 1, "{global}");
+            assert_eq!(errors[0].message, message);
+            // At the sphere that asks for it.
+            assert!(!errors[0].span.range.is_empty());
+        }
     }
 }

@@ -33,6 +33,7 @@ mod sampling;
 mod shapes;
 mod statistics;
 mod sturm;
+mod subsurface;
 mod texture_point;
 mod tracer;
 

@@ -6,6 +6,7 @@
 
 mod participating;
 mod projection;
+mod subsurface;
 
 use crate::atmosphere::{Atmosphere, Sky};
 use crate::bvh::Bvh;
@@ -92,6 +93,8 @@ pub struct World {
     pub radiosity: Option<crate::radiosity::Radiosity>,
     /// The photons the lights shot, when the scene uses photons.
     pub photons: Option<PhotonMap>,
+    /// Subsurface light transport, when the scene asks for it and the quality allows it.
+    pub subsurface: Option<crate::subsurface::Settings>,
 }
 
 impl World {
@@ -138,6 +141,8 @@ pub struct Tracer<'w> {
     /// lighting until its reflected ray is traced: a stack, since those rays shade further
     /// surfaces above the entries of the surface that sent them.
     reflections: Vec<(DVec3, DVec3, f64)>,
+    /// The last diffusion profile of a translucent surface.
+    profiles: subsurface::ProfileCache,
 }
 
 impl<'w> Tracer<'w> {
@@ -157,6 +162,7 @@ impl<'w> Tracer<'w> {
                 .as_ref()
                 .map(crate::radiosity::Walk::rendering),
             reflections: Vec::new(),
+            profiles: subsurface::ProfileCache::default(),
         }
     }
 
@@ -284,12 +290,23 @@ impl<'w> Tracer<'w> {
 
             let ambient = self.ambient(finish, pigment.rgb, normal, opacity, &mut indirect);
             let mut own = pigment.rgb * (ambient + finish.emission) * opacity;
+            // A translucent layer's diffuse light comes from under the surface, not from
+            // the light sources shining on the point itself.
+            let profile = match world.subsurface {
+                Some(_) => self.subsurface_profile(layer, pigment.rgb, leaf),
+                None => None,
+            };
             let shading = Shading {
                 p,
                 normal,
                 ray,
                 surface: pigment.rgb,
                 finish,
+                diffuse: if profile.is_some() {
+                    0.0
+                } else {
+                    finish.diffuse
+                },
                 opacity,
                 double_illuminate: leaf.double_illuminate,
             };
@@ -298,6 +315,10 @@ impl<'w> Tracer<'w> {
             let unlit = self.vain_pretrace() || !shows_light(finish);
             for light in world.lights_for(leaf).filter(|_| !unlit) {
                 own += self.direct_light(light, &shading);
+            }
+            if let Some(profile) = profile.filter(|_| !unlit && finish.diffuse > 0.0) {
+                let under = self.subsurface_light(&profile, leaf, p, raw_normal);
+                own += under * finish.diffuse * opacity;
             }
             for &(light, from) in photon_lights.iter().filter(|_| !unlit) {
                 let lit = Lit {
@@ -375,20 +396,7 @@ impl<'w> Tracer<'w> {
         if facing(normal, incoming.direction, finish, double_illuminate).is_none() {
             return DVec3::ZERO;
         }
-        let world = self.world;
-        let mut light_colour = if !light.shadowless && world.quality.shadows {
-            self.unshadowed(light, p, &incoming)
-        } else if self
-            .projected_reach(light, p, incoming.direction, incoming.distance)
-            .is_some()
-        {
-            incoming.colour
-        } else {
-            DVec3::ZERO
-        };
-        if light.media_attenuation && world.atmosphere.is_some() {
-            light_colour *= self.atmospheric_attenuation(p, &incoming);
-        }
+        let light_colour = self.arriving(light, p, &incoming);
         if light_colour.max_element() < 1e-10 {
             return DVec3::ZERO;
         }
@@ -401,6 +409,26 @@ impl<'w> Tracer<'w> {
         self.lit(&lit, at)
     }
 
+    /// The light of `light` that reaches `p` past the shadow-casting objects, through its
+    /// projection object and the atmosphere.
+    fn arriving(&mut self, light: &Light, p: DVec3, incoming: &Incoming) -> DVec3 {
+        let world = self.world;
+        let mut colour = if !light.shadowless && world.quality.shadows {
+            self.unshadowed(light, p, incoming)
+        } else if self
+            .projected_reach(light, p, incoming.direction, incoming.distance)
+            .is_some()
+        {
+            incoming.colour
+        } else {
+            DVec3::ZERO
+        };
+        if light.media_attenuation && world.atmosphere.is_some() {
+            colour *= self.atmospheric_attenuation(p, incoming);
+        }
+        colour
+    }
+
     /// Diffuse light and highlights from light arriving unshadowed, from a light source or
     /// from photons.
     fn lit(&self, lit: &Lit, at: &Shading<'_>) -> DVec3 {
@@ -410,6 +438,7 @@ impl<'w> Tracer<'w> {
             ray,
             surface,
             finish,
+            diffuse,
             opacity,
             double_illuminate,
         } = *at;
@@ -421,7 +450,7 @@ impl<'w> Tracer<'w> {
         let diffuse = if backside {
             finish.diffuse_back
         } else {
-            finish.diffuse
+            diffuse
         };
         if diffuse > 0.0 {
             let mut intensity = if finish.brilliance == 1.0 {
@@ -718,6 +747,9 @@ struct Shading<'a> {
     ray: &'a Ray,
     surface: DVec3,
     finish: &'a Finish,
+    /// The front diffuse the light sources give the point directly: the finish's, or none
+    /// where it comes from under the surface instead.
+    diffuse: f64,
     opacity: f64,
     double_illuminate: bool,
 }
@@ -934,4 +966,18 @@ fn fresnel(cos: f64, n: f64) -> f64 {
     let a = (g - cos) / (g + cos);
     let b = (cos * (g + cos) - 1.0) / (cos * (g - cos) + 1.0);
     (0.5 * a * a * (1.0 + b * b)).clamp(0.0, 1.0)
+}
+
+/// The colour of the centre pixel of a 40 × 30 image of the `#version 3.7` scene `text`,
+/// whose world is `world`, for tests.
+#[cfg(test)]
+pub(crate) fn centre(world: &World, text: &str) -> DVec3 {
+    use analysis::{EvalOptions, MemoryFiles, evaluate};
+    let files = MemoryFiles::new().with("scene.pov", format!("#version 3.7;\n{text}"));
+    let scene = evaluate("scene.pov", &files, &EvalOptions::default())
+        .scene
+        .unwrap();
+    let camera = crate::camera::Camera::from_scene(&scene.camera).unwrap();
+    let ray = camera.ray(20.0, 15.0, 40.0, 30.0).unwrap();
+    Tracer::new(world).trace_primary(&ray).colour
 }

@@ -84,6 +84,18 @@ fn wrong_radiosity_fails_the_thresholds() {
     }
 }
 
+/// The subsurface thresholds, loose as stochastic light needs, still catch light that does
+/// not travel under the surface: the same scene without `global_settings { subsurface { }
+/// }`, whose wax slab lit from behind shows no glow and whose marble's shadow side no
+/// light, fails them.
+#[test]
+fn wrong_subsurface_fails_the_thresholds() {
+    wrong_versions_fail(
+        "subsurface",
+        &[("subsurface ignored", "subsurface { samples 50, 50 }", "")],
+    );
+}
+
 /// Methods 1 and 3 antialias the same picture: against POV-Ray's method-2 reference of
 /// basic.pov (Debian's POV-Ray 3.7 has no method 3 to compare with), each stays within the
 /// scene's thresholds.

@@ -339,12 +339,21 @@ fn scene_errors_are_the_gcc_style_report() {
 /// thread count nor the platform changes it.
 #[test]
 fn photon_caustics_render_the_same_in_typst_and_natively() {
+    renders_the_same_in_typst_and_natively("photons-reflect");
+}
+
+/// Subsurface light in the plugin: the marble and wax scene renders through Typst to the
+/// same pixels as natively. Its probe rays are seeded from the point they start from.
+#[test]
+fn subsurface_light_renders_the_same_in_typst_and_natively() {
+    renders_the_same_in_typst_and_natively("subsurface");
+}
+
+/// Renders the manifest's scene `name` at 96 × 72 without antialiasing natively and in a
+/// Typst document, and asserts that every channel of every pixel is the same.
+fn renders_the_same_in_typst_and_natively(name: &str) {
     let scenes = tests::fidelity::manifest();
-    let mut scene = scenes
-        .iter()
-        .find(|s| s.name == "photons-reflect")
-        .unwrap()
-        .clone();
+    let mut scene = scenes.iter().find(|s| s.name == name).unwrap().clone();
     scene.options = ["+W96", "+H72", "-A"].map(String::from).to_vec();
     let native = scene.render_with(&scene.source()).unwrap();
     let doc = Document::new(&format!(

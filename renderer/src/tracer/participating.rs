@@ -145,21 +145,8 @@ impl<'w> Tracer<'w> {
 #[cfg(test)]
 mod tests {
     use crate::build::world_of_source as world;
-    use crate::camera::Camera;
-    use crate::tracer::{Tracer, World};
-    use analysis::{EvalOptions, MemoryFiles, evaluate};
+    use crate::tracer::centre;
     use glam::DVec3;
-
-    /// The colour of the centre pixel of a 40 × 30 image.
-    fn centre(world: &World, text: &str) -> DVec3 {
-        let files = MemoryFiles::new().with("scene.pov", format!("#version 3.7;\n{text}"));
-        let scene = evaluate("scene.pov", &files, &EvalOptions::default())
-            .scene
-            .unwrap();
-        let camera = Camera::from_scene(&scene.camera).unwrap();
-        let ray = camera.ray(20.0, 15.0, 40.0, 30.0).unwrap();
-        Tracer::new(world).trace_primary(&ray).colour
-    }
 
     #[test]
     fn scenes_without_atmosphere_or_media_skip_the_check() {
