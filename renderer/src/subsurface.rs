@@ -87,7 +87,8 @@ impl Dipole {
         let r = r2.sqrt();
         let far = self.sigma_tr * self.sigma_tr * (-self.sigma_tr * r).exp();
         let z = self.z_real;
-        let near = z / (r2 + z * z).powf(1.5);
+        let d2 = r2 + z * z;
+        let near = z / (d2 * d2.sqrt());
         (far + near) / (4.0 * PI)
     }
 
