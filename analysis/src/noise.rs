@@ -64,15 +64,18 @@ const GRADIENTS: [[f64; 3]; 16] = [
     [0.0, -1.0, -1.0],
 ];
 
-fn grad(hash: u8, x: f64, y: f64, z: f64) -> f64 {
-    let [gx, gy, gz] = GRADIENTS[usize::from(hash & 15)];
+fn grad(hash: usize, x: f64, y: f64, z: f64) -> f64 {
+    let [gx, gy, gz] = GRADIENTS[hash & 15];
     gx * x + gy * y + gz * z
 }
 
 /// `x.floor()` without a call into the maths library (x86-64's baseline has no rounding
 /// instruction): truncation corrected downwards. Beyond 2^52 every float is an integer.
+/// WebAssembly has the instruction itself.
 fn lattice_floor(x: f64) -> f64 {
-    if x.abs() < 4.0e15 {
+    if cfg!(target_arch = "wasm32") {
+        x.floor()
+    } else if x.abs() < 4.0e15 {
         let t = x as i64 as f64;
         if t > x { t - 1.0 } else { t }
     } else {
@@ -85,7 +88,9 @@ pub fn signed(p: DVec3) -> f64 {
     if !p.is_finite() {
         return 0.0;
     }
-    let perm = &PERMUTATION;
+    // Every index below is at most 511 (a table entry plus a cell coordinate, plus one):
+    // the mask changes none of them and spares a bounds check at each lookup.
+    let perm = |i: usize| usize::from(PERMUTATION[i & 511]);
     let f = DVec3::new(lattice_floor(p.x), lattice_floor(p.y), lattice_floor(p.z));
     let (xi, yi, zi) = (
         // The cell's coordinates modulo 256 (two's complement wraps negatives as
@@ -96,33 +101,33 @@ pub fn signed(p: DVec3) -> f64 {
     );
     let (x, y, z) = (p.x - f.x, p.y - f.y, p.z - f.z);
     let (u, v, w) = (fade(x), fade(y), fade(z));
-    let a = perm[xi] as usize + yi;
-    let (aa, ab) = (perm[a] as usize + zi, perm[a + 1] as usize + zi);
-    let b = perm[xi + 1] as usize + yi;
-    let (ba, bb) = (perm[b] as usize + zi, perm[b + 1] as usize + zi);
+    let a = perm(xi) + yi;
+    let (aa, ab) = (perm(a) + zi, perm(a + 1) + zi);
+    let b = perm(xi + 1) + yi;
+    let (ba, bb) = (perm(b) + zi, perm(b + 1) + zi);
     let lerp = |t: f64, a: f64, b: f64| a + t * (b - a);
     lerp(
         w,
         lerp(
             v,
-            lerp(u, grad(perm[aa], x, y, z), grad(perm[ba], x - 1.0, y, z)),
+            lerp(u, grad(perm(aa), x, y, z), grad(perm(ba), x - 1.0, y, z)),
             lerp(
                 u,
-                grad(perm[ab], x, y - 1.0, z),
-                grad(perm[bb], x - 1.0, y - 1.0, z),
+                grad(perm(ab), x, y - 1.0, z),
+                grad(perm(bb), x - 1.0, y - 1.0, z),
             ),
         ),
         lerp(
             v,
             lerp(
                 u,
-                grad(perm[aa + 1], x, y, z - 1.0),
-                grad(perm[ba + 1], x - 1.0, y, z - 1.0),
+                grad(perm(aa + 1), x, y, z - 1.0),
+                grad(perm(ba + 1), x - 1.0, y, z - 1.0),
             ),
             lerp(
                 u,
-                grad(perm[ab + 1], x, y - 1.0, z - 1.0),
-                grad(perm[bb + 1], x - 1.0, y - 1.0, z - 1.0),
+                grad(perm(ab + 1), x, y - 1.0, z - 1.0),
+                grad(perm(bb + 1), x - 1.0, y - 1.0, z - 1.0),
             ),
         ),
     )
@@ -214,7 +219,11 @@ mod tests {
     fn the_gradient_table_is_improved_noise_selection() {
         let (x, y, z) = (0.3291, -0.727, 0.5521);
         for hash in 0..=255u8 {
-            assert_eq!(grad(hash, x, y, z), branching_grad(hash, x, y, z), "{hash}");
+            assert_eq!(
+                grad(usize::from(hash), x, y, z),
+                branching_grad(hash, x, y, z),
+                "{hash}"
+            );
         }
     }
 
