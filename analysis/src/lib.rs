@@ -20,6 +20,7 @@ pub mod scene;
 pub mod spelling;
 pub mod spline;
 pub mod stdinc;
+pub mod trig;
 
 pub use eval::{Budgets, EvalOptions, Evaluation, Message, Stream, evaluate, evaluate_with};
 pub use files::{DirectoryFiles, FileSource, MemoryFiles, Sources};

@@ -7,6 +7,7 @@
 
 use crate::fast_math;
 use analysis::function::{Body, Function, Internal, Op, Unary};
+use analysis::trig;
 use std::collections::HashMap;
 use std::sync::Arc;
 
@@ -112,7 +113,7 @@ fn unary(f: Unary, v: f64) -> f64 {
         Unary::Atan => v.atan(),
         Unary::Atanh => v.atanh(),
         Unary::Ceil => v.ceil(),
-        Unary::Cos => fast_math::sin_cos(v).1,
+        Unary::Cos => trig::sin_cos(v).1,
         Unary::Cosh => v.cosh(),
         Unary::Degrees => v.to_degrees(),
         Unary::Exp => v.exp(),
@@ -121,7 +122,7 @@ fn unary(f: Unary, v: f64) -> f64 {
         Unary::Ln => v.ln(),
         Unary::Log => v.log10(),
         Unary::Radians => v.to_radians(),
-        Unary::Sin => fast_math::sin_cos(v).0,
+        Unary::Sin => trig::sin_cos(v).0,
         Unary::Sinh => v.sinh(),
         Unary::Sqr => v * v,
         Unary::Sqrt => v.sqrt(),
@@ -632,12 +633,12 @@ impl Program {
                 Inst::Sqrt(o, a) => r[at(o)] = r[at(a)].sqrt(),
                 Inst::Unary(o, f, a) => r[at(o)] = unary(f, r[at(a)]),
                 Inst::SinCos(s, c, a) => {
-                    let (sin, cos) = fast_math::sin_cos(r[at(a)]);
+                    let (sin, cos) = trig::sin_cos(r[at(a)]);
                     r[at(s)] = sin;
                     r[at(c)] = cos;
                 }
                 Inst::SinCosK(s, c, a, k) => {
-                    let (sin, cos) = fast_math::sin_cos(r[at(a)] * k);
+                    let (sin, cos) = trig::sin_cos(r[at(a)] * k);
                     r[at(s)] = sin;
                     r[at(c)] = cos;
                 }

@@ -5,6 +5,7 @@
 //! by bracketed Newton iteration. Coefficients are given lowest degree first.
 
 use crate::fast_math;
+use analysis::trig;
 
 /// The highest degree POV-Ray's `poly` allows.
 pub const MAX_DEGREE: usize = 15;
@@ -221,7 +222,7 @@ fn cubic_roots(a: f64, b: f64, c: f64) -> ([f64; 3], usize) {
     if r * r < q * q * q {
         let theta = (r / (q * q * q).sqrt()).clamp(-1.0, 1.0).acos();
         let m = -2.0 * q.sqrt();
-        let (sin, cos) = fast_math::sin_cos(theta / 3.0);
+        let (sin, cos) = trig::sin_cos(theta / 3.0);
         let (above, below) = third_turns(sin, cos);
         ([m * cos - shift, m * above - shift, m * below - shift], 3)
     } else {
@@ -249,7 +250,7 @@ fn largest_cubic_root(a: f64, b: f64, c: f64) -> f64 {
     let shift = a / 3.0;
     if r * r < q * q * q {
         let theta = (r / (q * q * q).sqrt()).clamp(-1.0, 1.0).acos();
-        let (sin, cos) = fast_math::sin_cos(theta / 3.0);
+        let (sin, cos) = trig::sin_cos(theta / 3.0);
         -2.0 * q.sqrt() * third_turns(sin, cos).0 - shift
     } else {
         let big = -r.signum() * fast_math::cbrt(r.abs() + (r * r - q * q * q).sqrt());

@@ -4,6 +4,7 @@
 //! here come from the same generator, the sources from our own. The patterns therefore
 //! match POV-Ray's in wavelength and amplitude, not in where the sources sit.
 
+use crate::trig;
 use glam::DVec3;
 use std::f64::consts::TAU;
 
@@ -49,7 +50,7 @@ fn each_source(
             l => l,
         };
         let k = if own { *own_frequency } else { 1.0 };
-        let sine = ((length * frequency * k + phase) * TAU).sin();
+        let sine = trig::sin_cos((length * frequency * k + phase) * TAU).0;
         f(d, length, sine, 1.0 / k);
     }
 }

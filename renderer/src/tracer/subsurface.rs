@@ -96,7 +96,7 @@ impl<'w> Tracer<'w> {
                 continue;
             }
             let (a1, a2) = (axes[(axis + 1) % 3], axes[(axis + 2) % 3]);
-            let (sin, cos) = crate::fast_math::sin_cos(TAU * v);
+            let (sin, cos) = analysis::trig::sin_cos(TAU * v);
             let half = (reach * reach - r * r).sqrt();
             let origin = p + r * (cos * a1 + sin * a2) + axes[axis] * half;
             self.probe(
