@@ -151,6 +151,11 @@ enum Node {
     Dot3([u32; 6]),
     /// sin(a·k) or cos(a·k), when the product serves only a sine and cosine pair.
     ScaledTrig(Unary, u32, f64),
+    /// a·b + k, √a + k and (a + b)·k: a product, root or sum used once, and the constant
+    /// added to it or multiplied with it.
+    MulAddK(u32, u32, f64),
+    SqrtAddK(u32, f64),
+    AddMulK(u32, u32, f64),
     Select3(u32, u32, u32),
     Select4(u32, u32, u32, u32),
     Min(Vec<u32>),
@@ -208,6 +213,10 @@ enum Inst {
     /// o = a·b + c·d and o = a·b + (c·d + e·f).
     MulMulAdd(u8, [u8; 4]),
     Dot3(u8, [u8; 6]),
+    /// o = a·b + k, √a + k and (a + b)·k.
+    MulAddK(u8, [u8; 2], f64),
+    SqrtAddK(u8, u8, f64),
+    AddMulK(u8, [u8; 2], f64),
     /// o = a + k, a·k, k - a, a / k and k / a.
     AddK(u8, u8, f64),
     MulK(u8, u8, f64),
@@ -284,7 +293,10 @@ impl Builder {
             | Node::MulSub(..)
             | Node::MulMulAdd(..)
             | Node::Dot3(..)
-            | Node::ScaledTrig(..) => None,
+            | Node::ScaledTrig(..)
+            | Node::MulAddK(..)
+            | Node::SqrtAddK(..)
+            | Node::AddMulK(..) => None,
         };
         if let Some(key) = &key
             && let Some(&index) = self.known.get(key)
@@ -446,6 +458,8 @@ impl Program {
         let live = live_nodes(&nodes, result, params);
         scale_trig_pairs(&mut nodes, &live, result);
         let live = live_nodes(&nodes, result, params);
+        fuse_constant_tails(&mut nodes, &live, result);
+        let live = live_nodes(&nodes, result, params);
         // A sine and a cosine of one argument: the later one is filled by the earlier.
         let mut partner: Vec<Option<u32>> = vec![None; n];
         for (s, c) in trig_pairs(&nodes, &live) {
@@ -543,6 +557,9 @@ impl Program {
                 Node::MulSub(a, b, c) => Some(Inst::MulSub(out, [r(a), r(b), r(c)])),
                 Node::MulMulAdd(v) => Some(Inst::MulMulAdd(out, v.map(|a| r(&a)))),
                 Node::Dot3(v) => Some(Inst::Dot3(out, v.map(|a| r(&a)))),
+                Node::MulAddK(a, b, k) => Some(Inst::MulAddK(out, [r(a), r(b)], *k)),
+                Node::SqrtAddK(a, k) => Some(Inst::SqrtAddK(out, r(a), *k)),
+                Node::AddMulK(a, b, k) => Some(Inst::AddMulK(out, [r(a), r(b)], *k)),
                 Node::ScaledTrig(f, a, k) => match partner[i] {
                     Some(p) => {
                         let other = register[p as usize];
@@ -654,6 +671,9 @@ impl Program {
                 Inst::Dot3(o, [a, b, c, d, e, f]) => {
                     r[at(o)] = r[at(a)] * r[at(b)] + (r[at(c)] * r[at(d)] + r[at(e)] * r[at(f)])
                 }
+                Inst::MulAddK(o, [a, b], k) => r[at(o)] = r[at(a)] * r[at(b)] + k,
+                Inst::SqrtAddK(o, a, k) => r[at(o)] = r[at(a)].sqrt() + k,
+                Inst::AddMulK(o, [a, b], k) => r[at(o)] = (r[at(a)] + r[at(b)]) * k,
                 Inst::AddK(o, a, k) => r[at(o)] = r[at(a)] + k,
                 Inst::MulK(o, a, k) => r[at(o)] = r[at(a)] * k,
                 Inst::KSub(o, a, k) => r[at(o)] = k - r[at(a)],
@@ -747,7 +767,8 @@ fn operands(node: &Node) -> Vec<u32> {
         Node::Select4(a, b, c, d) => vec![*a, *b, *c, *d],
         Node::MulMulAdd(v) => v.to_vec(),
         Node::Dot3(v) => v.to_vec(),
-        Node::ScaledTrig(_, a, _) => vec![*a],
+        Node::ScaledTrig(_, a, _) | Node::SqrtAddK(a, _) => vec![*a],
+        Node::MulAddK(a, b, _) | Node::AddMulK(a, b, _) => vec![*a, *b],
         Node::Min(v) | Node::Max(v) => v.clone(),
         Node::Call(_, v) | Node::CallPart(_, v, _) | Node::Internal(_, v) => v.clone(),
         Node::Sum {
@@ -857,6 +878,41 @@ fn sum_of_products(nodes: &[Node], uses: &[u32], x: u32, y: u32, b: u32) -> (Nod
         (Node::Binary(Binary::Mul, c, d), 1) => (Node::MulMulAdd([x, y, *c, *d]), Some(b)),
         (Node::MulMulAdd([c, d, e, f]), 1) => (Node::Dot3([x, y, *c, *d, *e, *f]), Some(b)),
         _ => (Node::MulAdd(x, y, b), None),
+    }
+}
+
+/// Rewrites, in place, a constant added to a product or a square root, or multiplied with
+/// a sum, into one node with that operand when nothing else reads it: one instruction
+/// instead of two, with the same operations in the same order, so values do not change.
+fn fuse_constant_tails(nodes: &mut [Node], live: &[bool], result: u32) {
+    let mut uses = use_counts(nodes, live, result);
+    for i in 0..nodes.len() {
+        if !live[i] {
+            continue;
+        }
+        // a + k, and a - k, which is a + (-k) to the bit.
+        let (a, fused) = match nodes[i] {
+            Node::WithConstant(op @ (Binary::Add | Binary::Sub), a, k, false) => {
+                let k = if op == Binary::Sub { -k } else { k };
+                let fused = match nodes[a as usize] {
+                    Node::Binary(Binary::Mul, x, y) => Some(Node::MulAddK(x, y, k)),
+                    Node::Unary(Unary::Sqrt, x) => Some(Node::SqrtAddK(x, k)),
+                    _ => None,
+                };
+                (a, fused)
+            }
+            Node::WithConstant(Binary::Mul, a, k, _) => match nodes[a as usize] {
+                Node::Binary(Binary::Add, x, y) => (a, Some(Node::AddMulK(x, y, k))),
+                _ => (a, None),
+            },
+            _ => continue,
+        };
+        if let Some(node) = fused
+            && uses[a as usize] == 1
+        {
+            uses[a as usize] = 0;
+            nodes[i] = node;
+        }
     }
 }
 
@@ -1060,6 +1116,54 @@ mod tests {
         assert_count(&program, |i| matches!(i, Inst::SinCosK(..)), 3);
         assert_count(&program, |i| matches!(i, Inst::Dot3(..)), 2);
         assert_count(&program, |_| true, 6);
+    }
+
+    #[test]
+    fn constants_after_products_roots_and_sums_are_one_instruction() {
+        // ((x·y + 0.25) + √z - 4)·0.5, with x·y and √z used nowhere else, but x + y used
+        // twice: (x + y)·3 + (x + y).
+        let smooth = code(
+            &["x", "y", "z"],
+            vec![
+                Op::Param(0),
+                Op::Param(1),
+                Op::Mul,
+                Op::Const(0.25),
+                Op::Add,
+                Op::Param(2),
+                Op::Unary(Unary::Sqrt),
+                Op::Const(4.0),
+                Op::Sub,
+                Op::Add,
+                Op::Const(0.5),
+                Op::Mul,
+            ],
+        );
+        let program = Program::compile(&smooth, 3).unwrap();
+        for p in [[0.3, -1.2, 2.5], [10.0, 0.0, 4.0], [-7.5, 3.3, 0.1]] {
+            assert_eq!(program.eval(&p), smooth.eval(&p), "{p:?}");
+        }
+        assert_count(&program, |i| matches!(i, Inst::MulAddK(..)), 1);
+        assert_count(&program, |i| matches!(i, Inst::SqrtAddK(..)), 1);
+        assert_count(&program, |i| matches!(i, Inst::AddMulK(..)), 1);
+        assert_count(&program, |_| true, 3);
+        let shared = code(
+            &["x", "y"],
+            vec![
+                Op::Param(0),
+                Op::Param(1),
+                Op::Add,
+                Op::Const(3.0),
+                Op::Mul,
+                Op::Param(0),
+                Op::Param(1),
+                Op::Add,
+                Op::Add,
+            ],
+        );
+        let program = Program::compile(&shared, 2).unwrap();
+        assert_eq!(program.eval(&[1.5, -0.25]), shared.eval(&[1.5, -0.25]));
+        assert_count(&program, |i| matches!(i, Inst::AddMulK(..)), 0);
     }
 
     #[test]
