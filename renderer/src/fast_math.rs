@@ -57,6 +57,19 @@ pub fn cbrt(x: f64) -> f64 {
     y.copysign(x)
 }
 
+/// `x` to the power `e`: by repeated squaring when `e` is a whole number from 0 to 256,
+/// as highlight exponents (1/roughness, phong_size) mostly are, within a few ulp of
+/// `powf`; in WebAssembly `powf` is a long software routine, and highlights call it for
+/// every light at every hit.
+#[inline]
+pub fn pow(x: f64, e: f64) -> f64 {
+    if e.trunc() == e && (0.0..=256.0).contains(&e) {
+        x.powi(e as i32)
+    } else {
+        x.powf(e)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -90,6 +103,17 @@ mod tests {
                 assert!(same(max(x, y), x.max(y)), "max({x}, {y})");
             }
         }
+    }
+
+    #[test]
+    fn pow_matches_the_standard_library() {
+        for x in [0.0f64, 1e-3, 0.31, 0.5, 0.999_999, 1.0, 1.7] {
+            for e in [0.0, 1.0, 2.0, 25.0, 40.0, 50.0, 83.333, 256.0, 300.0, 0.5] {
+                let (want, got) = (x.powf(e), pow(x, e));
+                assert!((want - got).abs() <= 1e-13 * want, "{x}^{e}: {want} {got}");
+            }
+        }
+        assert!(pow(f64::NAN, 2.0).is_nan());
     }
 
     #[test]

@@ -456,7 +456,7 @@ impl<'w> Tracer<'w> {
             let mut intensity = if finish.brilliance == 1.0 {
                 cos_in
             } else {
-                cos_in.powf(finish.brilliance)
+                fast_math::pow(cos_in, finish.brilliance)
             } * diffuse
                 * opacity;
             if finish.crand > 0.0 {
@@ -473,7 +473,7 @@ impl<'w> Tracer<'w> {
             let reflected = ray.direction - 2.0 * ray.direction.dot(normal) * normal;
             let cos = reflected.dot(lit.direction);
             if cos > 0.0 && (finish.phong_size < 60.0 || cos > 0.0008) {
-                let intensity = finish.phong * cos.powf(finish.phong_size);
+                let intensity = finish.phong * fast_math::pow(cos, finish.phong_size);
                 let tint = metallic_tint(finish.metallic, surface, normal.dot(lit.direction));
                 colour += lit.colour * tint * intensity;
             }
@@ -484,7 +484,7 @@ impl<'w> Tracer<'w> {
             if len > 0.0 {
                 let cos = normal.dot(halfway) / len;
                 if cos > 0.0 {
-                    let intensity = finish.specular * cos.powf(1.0 / finish.roughness);
+                    let intensity = finish.specular * fast_math::pow(cos, 1.0 / finish.roughness);
                     let ndotl = halfway.dot(lit.direction) / len;
                     let tint = metallic_tint(finish.metallic, surface, ndotl);
                     colour += lit.colour * tint * intensity;
