@@ -5,36 +5,16 @@ use super::tokens::Token;
 use super::value::{Terms, Value};
 use super::{Evaluator, Result};
 use glam::DVec3;
-use syntax::SyntaxKind::*;
+use syntax::SyntaxKind::{self, *};
 
 impl Evaluator<'_> {
     /// The value of a built-in constant or function call starting at `token`, or `None`
     /// when `token` does not start one.
     pub fn builtin(&mut self, token: &Token) -> Result<Option<Value>> {
-        let float = |v: f64| Ok(Some(Value::Float(v)));
-        let vector = |v: DVec3| Ok(Some(Value::Vector(Terms::new(&[v.x, v.y, v.z]))));
+        if let Some(value) = self.builtin_constant(token.kind) {
+            return Ok(Some(value));
+        }
         match token.kind {
-            PI_KW => float(std::f64::consts::PI),
-            TAU_KW => float(std::f64::consts::TAU),
-            TRUE_KW | YES_KW | ON_KW => float(1.0),
-            FALSE_KW | NO_KW | OFF_KW => float(0.0),
-            X_KW => vector(DVec3::X),
-            Y_KW => vector(DVec3::Y),
-            Z_KW => vector(DVec3::Z),
-            T_KW => Ok(Some(Value::Vector(Terms::new(&[0.0, 0.0, 0.0, 1.0])))),
-            U_KW => Ok(Some(Value::Vector(Terms::new(&[1.0, 0.0])))),
-            V_KW => Ok(Some(Value::Vector(Terms::new(&[0.0, 1.0])))),
-            CLOCK_KW => float(self.options.clock),
-            CLOCK_DELTA_KW => float(0.0),
-            CLOCK_ON_KW => float(f64::from(u8::from(self.options.clock_on))),
-            INITIAL_CLOCK_KW => float(self.options.initial_clock),
-            FINAL_CLOCK_KW => float(self.options.final_clock),
-            INITIAL_FRAME_KW => float(f64::from(self.options.initial_frame)),
-            FINAL_FRAME_KW => float(f64::from(self.options.final_frame)),
-            FRAME_NUMBER_KW => float(f64::from(self.options.frame_number)),
-            IMAGE_WIDTH_KW => float(f64::from(self.options.image_width)),
-            IMAGE_HEIGHT_KW => float(f64::from(self.options.image_height)),
-            VERSION_KW => float(self.version),
             kind if super::expr::is_colour_keyword(kind) => Err(self.error_at(
                 token,
                 format!(
@@ -46,71 +26,54 @@ impl Evaluator<'_> {
         }
     }
 
+    /// The value of a built-in constant (`pi`, `x`, `clock`, `version`, ...).
+    pub(super) fn builtin_constant(&self, kind: SyntaxKind) -> Option<Value> {
+        let vector = |v: DVec3| Value::Vector(Terms::new(&[v.x, v.y, v.z]));
+        let float = |v: f64| Some(Value::Float(v));
+        match kind {
+            PI_KW => float(std::f64::consts::PI),
+            TAU_KW => float(std::f64::consts::TAU),
+            TRUE_KW | YES_KW | ON_KW => float(1.0),
+            FALSE_KW | NO_KW | OFF_KW => float(0.0),
+            X_KW => Some(vector(DVec3::X)),
+            Y_KW => Some(vector(DVec3::Y)),
+            Z_KW => Some(vector(DVec3::Z)),
+            T_KW => Some(Value::Vector(Terms::new(&[0.0, 0.0, 0.0, 1.0]))),
+            U_KW => Some(Value::Vector(Terms::new(&[1.0, 0.0]))),
+            V_KW => Some(Value::Vector(Terms::new(&[0.0, 1.0]))),
+            CLOCK_KW => float(self.options.clock),
+            CLOCK_DELTA_KW => float(0.0),
+            CLOCK_ON_KW => float(f64::from(u8::from(self.options.clock_on))),
+            INITIAL_CLOCK_KW => float(self.options.initial_clock),
+            FINAL_CLOCK_KW => float(self.options.final_clock),
+            INITIAL_FRAME_KW => float(f64::from(self.options.initial_frame)),
+            FINAL_FRAME_KW => float(f64::from(self.options.final_frame)),
+            FRAME_NUMBER_KW => float(f64::from(self.options.frame_number)),
+            IMAGE_WIDTH_KW => float(f64::from(self.options.image_width)),
+            IMAGE_HEIGHT_KW => float(f64::from(self.options.image_height)),
+            VERSION_KW => float(self.version),
+            _ => None,
+        }
+    }
+
     fn builtin_function(&mut self, token: &Token) -> Result<Option<Value>> {
         let float = |v: f64| Ok(Some(Value::Float(v)));
         let kind = token.kind;
-        let unary: Option<fn(f64) -> f64> = match kind {
-            ABS_KW => Some(f64::abs),
-            ACOS_KW => Some(|v: f64| v.clamp(-1.0, 1.0).acos()),
-            ACOSH_KW => Some(f64::acosh),
-            ASIN_KW => Some(|v: f64| v.clamp(-1.0, 1.0).asin()),
-            ASINH_KW => Some(f64::asinh),
-            ATAN_KW => Some(f64::atan),
-            ATANH_KW => Some(f64::atanh),
-            CEIL_KW => Some(f64::ceil),
-            COS_KW => Some(f64::cos),
-            COSH_KW => Some(f64::cosh),
-            DEGREES_KW => Some(f64::to_degrees),
-            EXP_KW => Some(f64::exp),
-            FLOOR_KW => Some(f64::floor),
-            INT_KW => Some(c_int),
-            LN_KW => Some(f64::ln),
-            LOG_KW => Some(f64::log10),
-            RADIANS_KW => Some(f64::to_radians),
-            SIN_KW => Some(f64::sin),
-            SINH_KW => Some(f64::sinh),
-            SQRT_KW => Some(f64::sqrt),
-            TAN_KW => Some(f64::tan),
-            TANH_KW => Some(f64::tanh),
-            _ => None,
-        };
-        if let Some(f) = unary {
+        if let Some(f) = float_function(kind) {
             let args = self.float_args_exactly(token, 1)?;
             let v = args[0];
-            // POV-Ray stops at these domain errors; the others give NaN or infinity.
-            let refused = match kind {
-                LN_KW if v <= 0.0 => Some("ln"),
-                LOG_KW if v <= 0.0 => Some("log"),
-                SQRT_KW if v < 0.0 => Some("sqrt"),
-                _ => None,
-            };
-            if let Some(name) = refused {
+            if let Some(name) = refused_argument(kind, v) {
                 return Err(self.error_at(token, format!("{name} of negative number {v:.6}")));
             }
             return float(f(v));
         }
         match kind {
-            ATAN2_KW => {
+            ATAN2_KW | POW_KW | MOD_KW | DIV_KW => {
                 let a = self.float_args_exactly(token, 2)?;
-                if a[0] == 0.0 && a[1] == 0.0 {
-                    return Err(self.error_at(token, "domain error: atan2(0, 0)"));
+                match float_function2(kind, a[0], a[1]) {
+                    Ok(v) => float(v),
+                    Err(message) => Err(self.error_at(token, message)),
                 }
-                float(a[0].atan2(a[1]))
-            }
-            POW_KW => {
-                let a = self.float_args_exactly(token, 2)?;
-                if a[0] == 0.0 && a[1] == 0.0 {
-                    return Err(self.error_at(token, "domain error: pow(0, 0)"));
-                }
-                float(a[0].powf(a[1]))
-            }
-            MOD_KW => {
-                let a = self.float_args_exactly(token, 2)?;
-                float(a[0] % a[1])
-            }
-            DIV_KW => {
-                let a = self.float_args_exactly(token, 2)?;
-                float(c_int(a[0] / a[1]))
             }
             MIN_KW | MAX_KW => {
                 let a = self.float_args()?;
@@ -120,8 +83,7 @@ impl Evaluator<'_> {
                         format!("{}() takes at least 1 argument", self.text(token)),
                     ));
                 }
-                let pick = if kind == MIN_KW { f64::min } else { f64::max };
-                float(a.iter().copied().reduce(pick).unwrap_or(0.0))
+                float(extreme(kind, &a))
             }
             SELECT_KW => {
                 let a = self.float_args()?;
@@ -660,6 +622,68 @@ pub fn format_float(v: f64, width: i64, precision: i64) -> String {
         return format!("{:>width_abs$}", "-nan");
     }
     text
+}
+
+/// The built-in function of one float named by `kind` (`sin`, `sqrt`, `int`, ...).
+pub(super) fn float_function(kind: SyntaxKind) -> Option<fn(f64) -> f64> {
+    match kind {
+        ABS_KW => Some(f64::abs),
+        ACOS_KW => Some(|v: f64| v.clamp(-1.0, 1.0).acos()),
+        ACOSH_KW => Some(f64::acosh),
+        ASIN_KW => Some(|v: f64| v.clamp(-1.0, 1.0).asin()),
+        ASINH_KW => Some(f64::asinh),
+        ATAN_KW => Some(f64::atan),
+        ATANH_KW => Some(f64::atanh),
+        CEIL_KW => Some(f64::ceil),
+        COS_KW => Some(f64::cos),
+        COSH_KW => Some(f64::cosh),
+        DEGREES_KW => Some(f64::to_degrees),
+        EXP_KW => Some(f64::exp),
+        FLOOR_KW => Some(f64::floor),
+        INT_KW => Some(c_int),
+        LN_KW => Some(f64::ln),
+        LOG_KW => Some(f64::log10),
+        RADIANS_KW => Some(f64::to_radians),
+        SIN_KW => Some(f64::sin),
+        SINH_KW => Some(f64::sinh),
+        SQRT_KW => Some(f64::sqrt),
+        TAN_KW => Some(f64::tan),
+        TANH_KW => Some(f64::tanh),
+        _ => None,
+    }
+}
+
+/// The name of a one-float function for an argument POV-Ray stops at (the others give NaN
+/// or infinity).
+pub(super) fn refused_argument(kind: SyntaxKind, v: f64) -> Option<&'static str> {
+    match kind {
+        LN_KW if v <= 0.0 => Some("ln"),
+        LOG_KW if v <= 0.0 => Some("log"),
+        SQRT_KW if v < 0.0 => Some("sqrt"),
+        _ => None,
+    }
+}
+
+/// `atan2`, `pow`, `mod` or `div` of `a` and `b`; the error is a domain error's message.
+pub(super) fn float_function2(
+    kind: SyntaxKind,
+    a: f64,
+    b: f64,
+) -> std::result::Result<f64, &'static str> {
+    match kind {
+        ATAN2_KW if a == 0.0 && b == 0.0 => Err("domain error: atan2(0, 0)"),
+        ATAN2_KW => Ok(a.atan2(b)),
+        POW_KW if a == 0.0 && b == 0.0 => Err("domain error: pow(0, 0)"),
+        POW_KW => Ok(a.powf(b)),
+        MOD_KW => Ok(a % b),
+        _ => Ok(c_int(a / b)),
+    }
+}
+
+/// `min(...)` or `max(...)` of at least one argument.
+pub(super) fn extreme(kind: SyntaxKind, args: &[f64]) -> f64 {
+    let pick = if kind == MIN_KW { f64::min } else { f64::max };
+    args.iter().copied().reduce(pick).unwrap_or(0.0)
 }
 
 #[cfg(test)]

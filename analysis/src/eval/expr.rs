@@ -2,6 +2,7 @@
 //! precedence and its rule that relational, logical and conditional operators only appear
 //! inside parentheses (which is what lets `>` close a vector literal).
 
+use super::expr_cache::Level;
 use super::tokens::Token;
 use super::value::{Terms, Value};
 use super::{Evaluator, Result};
@@ -11,7 +12,7 @@ use syntax::SyntaxKind::{self, *};
 pub const EPSILON: f64 = 1.0e-10;
 
 #[derive(Debug, Clone, Copy)]
-enum BinOp {
+pub(super) enum BinOp {
     Add,
     Sub,
     Mul,
@@ -186,6 +187,9 @@ impl Evaluator<'_> {
 
     /// Inside parentheses: `C ? A : B`, logical and relational operators too.
     pub fn full_expression(&mut self) -> Result<Value> {
+        if let Some(value) = self.replayed(Level::Full) {
+            return Ok(value);
+        }
         let first = self.next()?;
         self.unget(first.clone());
         let condition = self.logical()?;
@@ -251,6 +255,9 @@ impl Evaluator<'_> {
 
     /// `A + B`, `A - B`: the level that vector components and statement arguments use.
     pub fn additive(&mut self) -> Result<Value> {
+        if let Some(value) = self.replayed(Level::Additive) {
+            return Ok(value);
+        }
         let mut left = self.multiplicative()?;
         loop {
             if self.ends_before(&[PLUS, MINUS]) {
@@ -300,18 +307,7 @@ impl Evaluator<'_> {
             PLUS => self.unary(),
             BANG => {
                 let value = self.unary()?;
-                let not = |v: f64| f64::from(u8::from(!is_true(v)));
-                match value {
-                    Value::Float(v) => Ok(Value::Float(not(v))),
-                    Value::Vector(mut t) => {
-                        t.c.iter_mut().for_each(|c| *c = not(*c));
-                        Ok(Value::Vector(t))
-                    }
-                    other => Err(self.error_at(
-                        &token,
-                        format!("cannot apply '!' to a {}", other.type_name()),
-                    )),
-                }
+                logical_not(value).map_err(|message| self.error_at(&token, message))
             }
             _ => {
                 self.unget(token);
@@ -321,57 +317,12 @@ impl Evaluator<'_> {
     }
 
     fn negate(&self, at: &Token, value: Value) -> Result<Value> {
-        match value {
-            Value::Float(v) => Ok(Value::Float(-v)),
-            Value::Vector(mut t) => {
-                t.c.iter_mut().for_each(|c| *c = -*c);
-                Ok(Value::Vector(t))
-            }
-            Value::Colour(mut t) => {
-                t.c.iter_mut().for_each(|c| *c = -*c);
-                Ok(Value::Colour(t))
-            }
-            other => Err(self.error_at(at, format!("cannot negate a {}", other.type_name()))),
-        }
+        negated(value).map_err(|message| self.error_at(at, message))
     }
 
     fn binary(&self, op: &Token, bin: BinOp, left: Value, right: Value) -> Result<Value> {
-        if let (BinOp::Add, Value::String(_), Value::String(_)) = (bin, &left, &right) {
-            return Err(self.error_at(op, "strings are joined with concat(), not '+'"));
-        }
-        let (Some(a), Some(b)) = (left.terms(), right.terms()) else {
-            let culprit = if left.is_numeric() { &right } else { &left };
-            return Err(self.error_at(
-                op,
-                format!(
-                    "expected a float, vector or color operand, found {}",
-                    culprit.type_name()
-                ),
-            ));
-        };
-        let colour = matches!(left, Value::Colour(_)) || matches!(right, Value::Colour(_));
-        let len = a.len.max(b.len).max(if colour { 5 } else { 1 });
-        let a = if a.len == 1 {
-            Terms::splat(a.c[0], len)
-        } else {
-            a.promoted(len)
-        };
-        let b = if b.len == 1 {
-            Terms::splat(b.c[0], len)
-        } else {
-            b.promoted(len)
-        };
-        let mut out = Terms { len, c: [0.0; 5] };
-        for i in 0..len as usize {
-            out.c[i] = bin.apply(a.c[i], b.c[i]);
-        }
-        Ok(match (colour, len) {
-            (true, _) => Value::colour(out),
-            (false, 1) => Value::Float(out.c[0]),
-            (false, _) => Value::Vector(out),
-        })
+        combined(bin, left, right).map_err(|message| self.error_at(op, message))
     }
-
     /// A primary followed by dot items (`.x`, `.red`, `.hf`) and subscripts.
     fn postfix(&mut self) -> Result<Value> {
         let first = self.next()?;
@@ -411,45 +362,21 @@ impl Evaluator<'_> {
                 format!("a {} has no '.{}'", value.type_name(), self.text(item)),
             ));
         };
-        let index = match item.kind {
-            X_KW | U_KW | RED_KW => 0,
-            Y_KW | V_KW | GREEN_KW => 1,
-            Z_KW | BLUE_KW => 2,
-            T_KW => 3,
-            FILTER_KW => 3,
-            TRANSMIT_KW => 4,
-            GRAY_KW => {
-                let [r, g, b, ..] = terms.promoted(3).c;
-                return Ok(Value::Float(r * 0.297 + g * 0.589 + b * 0.114));
-            }
-            IDENT if self.text(item) == "hf" => {
-                let [r, g, ..] = terms.promoted(3).c;
-                return Ok(Value::Float(r + g / 256.0));
-            }
-            _ => {
-                return Err(self.error_at(item, format!("unknown dot item '.{}'", self.text(item))));
-            }
-        };
-        let len = if matches!(value, Value::Float(_)) {
-            1
-        } else {
-            terms.len as usize
-        };
-        if index >= len && !matches!(value, Value::Float(_)) {
-            return Err(self.error_at(
+        if item.kind == IDENT && self.text(item) == "hf" {
+            let [r, g, ..] = terms.promoted(3).c;
+            return Ok(Value::Float(r + g / 256.0));
+        }
+        match component(&value, terms, item.kind) {
+            Some(Ok(v)) => Ok(Value::Float(v)),
+            Some(Err(needed)) => Err(self.error_at(
                 item,
                 format!(
-                    "'.{}' needs a vector of at least {} components",
-                    self.text(item),
-                    index + 1
+                    "'.{}' needs a vector of at least {needed} components",
+                    self.text(item)
                 ),
-            ));
+            )),
+            None => Err(self.error_at(item, format!("unknown dot item '.{}'", self.text(item)))),
         }
-        Ok(Value::Float(if matches!(value, Value::Float(_)) {
-            terms.c[0]
-        } else {
-            terms.c[index]
-        }))
     }
 
     /// `Array[i]...` or `Dict["key"]`, after the `[`.
@@ -695,4 +622,105 @@ pub fn is_colour_keyword(kind: syntax::SyntaxKind) -> bool {
             | FILTER_KW
             | TRANSMIT_KW
     )
+}
+
+/// `left bin right` with POV-Ray's promotion: a float spreads over every component, a
+/// shorter vector gains zero components, and a colour operand makes the result a colour.
+/// The error is the message for the operator's place.
+pub(super) fn combined(
+    bin: BinOp,
+    left: Value,
+    right: Value,
+) -> std::result::Result<Value, String> {
+    if let (BinOp::Add, Value::String(_), Value::String(_)) = (bin, &left, &right) {
+        return Err("strings are joined with concat(), not '+'".into());
+    }
+    let (Some(a), Some(b)) = (left.terms(), right.terms()) else {
+        let culprit = if left.is_numeric() { &right } else { &left };
+        return Err(format!(
+            "expected a float, vector or color operand, found {}",
+            culprit.type_name()
+        ));
+    };
+    let colour = matches!(left, Value::Colour(_)) || matches!(right, Value::Colour(_));
+    let len = a.len.max(b.len).max(if colour { 5 } else { 1 });
+    let a = if a.len == 1 {
+        Terms::splat(a.c[0], len)
+    } else {
+        a.promoted(len)
+    };
+    let b = if b.len == 1 {
+        Terms::splat(b.c[0], len)
+    } else {
+        b.promoted(len)
+    };
+    let mut out = Terms { len, c: [0.0; 5] };
+    for i in 0..len as usize {
+        out.c[i] = bin.apply(a.c[i], b.c[i]);
+    }
+    Ok(match (colour, len) {
+        (true, _) => Value::colour(out),
+        (false, 1) => Value::Float(out.c[0]),
+        (false, _) => Value::Vector(out),
+    })
+}
+
+/// `-value`; the error is the message for the operator's place.
+pub(super) fn negated(value: Value) -> std::result::Result<Value, String> {
+    match value {
+        Value::Float(v) => Ok(Value::Float(-v)),
+        Value::Vector(mut t) => {
+            t.c.iter_mut().for_each(|c| *c = -*c);
+            Ok(Value::Vector(t))
+        }
+        Value::Colour(mut t) => {
+            t.c.iter_mut().for_each(|c| *c = -*c);
+            Ok(Value::Colour(t))
+        }
+        other => Err(format!("cannot negate a {}", other.type_name())),
+    }
+}
+
+/// `!value`, component by component; the error is the message for the operator's place.
+pub(super) fn logical_not(value: Value) -> std::result::Result<Value, String> {
+    let not = |v: f64| f64::from(u8::from(!is_true(v)));
+    match value {
+        Value::Float(v) => Ok(Value::Float(not(v))),
+        Value::Vector(mut t) => {
+            t.c.iter_mut().for_each(|c| *c = not(*c));
+            Ok(Value::Vector(t))
+        }
+        other => Err(format!("cannot apply '!' to a {}", other.type_name())),
+    }
+}
+
+/// The dot item `.item` (`.x`, `.red`, `.gray`, ...) of a float, vector or colour whose
+/// terms are `terms`: `None` for a word that is no such item, `Some(Err(n))` when the
+/// value has fewer than the `n` components the item needs. A float answers every item
+/// with itself.
+pub(super) fn component(
+    value: &Value,
+    terms: Terms,
+    item: SyntaxKind,
+) -> Option<std::result::Result<f64, usize>> {
+    let index = match item {
+        X_KW | U_KW | RED_KW => 0,
+        Y_KW | V_KW | GREEN_KW => 1,
+        Z_KW | BLUE_KW => 2,
+        T_KW => 3,
+        FILTER_KW => 3,
+        TRANSMIT_KW => 4,
+        GRAY_KW => {
+            let [r, g, b, ..] = terms.promoted(3).c;
+            return Some(Ok(r * 0.297 + g * 0.589 + b * 0.114));
+        }
+        _ => return None,
+    };
+    if matches!(value, Value::Float(_)) {
+        return Some(Ok(terms.c[0]));
+    }
+    if index >= terms.len as usize {
+        return Some(Err(index + 1));
+    }
+    Some(Ok(terms.c[index]))
 }

@@ -14,6 +14,7 @@ mod colour;
 mod datetime;
 mod directives;
 mod expr;
+mod expr_cache;
 mod file_io;
 mod function_body;
 mod height_field;
@@ -239,6 +240,8 @@ pub(crate) struct Evaluator<'a> {
     default_texture: Texture,
     /// `#default { radiosity { importance } }`: for objects placed from now on.
     default_importance: f64,
+    /// Expressions compiled for replay, by place.
+    expr_cache: expr_cache::ExprCache,
 }
 
 impl<'a> Evaluator<'a> {
@@ -289,6 +292,7 @@ impl<'a> Evaluator<'a> {
             settings: GlobalSettings::default(),
             default_texture: Texture::default(),
             default_importance: 1.0,
+            expr_cache: expr_cache::ExprCache::default(),
         }
     }
 
