@@ -3,7 +3,6 @@
 
 use super::expr::EPSILON;
 use super::stream::SkipStop;
-use super::symbols::Scope;
 use super::tokens::{Cond, Frame, FrameKind, Token};
 use super::value::{Array, Value};
 use super::{Evaluator, Message, Result, Stream};
@@ -903,7 +902,7 @@ impl Evaluator<'_> {
         self.syntax_check(file)?;
         let end = self.files[file as usize].tokens.len();
         self.include_stack.push(file);
-        self.scopes.push(Scope::default());
+        self.push_scope();
         self.push_frame(Frame {
             file,
             pos: 0,

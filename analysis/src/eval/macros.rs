@@ -2,7 +2,6 @@
 //! binds them in a new scope (an identifier argument by reference, anything else by
 //! value), and continues reading from the macro body.
 
-use super::symbols::Scope;
 use super::tokens::{FileId, Frame, FrameKind, Token};
 use super::value::Value;
 use super::{Evaluator, Result};
@@ -185,7 +184,7 @@ impl Evaluator<'_> {
             });
             return Err(error);
         }
-        self.scopes.push(Scope::default());
+        self.push_scope();
         for (param, arg) in def.params.iter().zip(args) {
             match arg {
                 Argument::ByValue(value) => self.declare_local(&param.name, value),

@@ -208,6 +208,8 @@ pub(crate) struct Evaluator<'a> {
     frames: Vec<Frame>,
     /// Symbol tables: the global one first, then one per include file and macro call.
     scopes: Vec<Scope>,
+    /// Emptied tables of ended scopes, for `push_scope` to reuse.
+    spare_scopes: Vec<Scope>,
     /// Tokens given back by the parsers, read again before the stream.
     pushed: Vec<Token>,
     /// The frame depths at which a declaration's value is being read, innermost last.
@@ -267,6 +269,7 @@ impl<'a> Evaluator<'a> {
             sources: Sources::default(),
             frames: Vec::new(),
             scopes: vec![globals],
+            spare_scopes: Vec::new(),
             pushed: Vec::new(),
             declaring: Vec::new(),
             macro_calls_held: false,

@@ -227,11 +227,11 @@ impl Evaluator<'_> {
         match frame.kind {
             FrameKind::Main => unreachable!("the main frame is never popped"),
             FrameKind::Include => {
-                self.scopes.pop();
+                self.pop_scope();
                 self.include_stack.pop();
             }
             FrameKind::Macro { .. } => {
-                self.scopes.pop();
+                self.pop_scope();
                 self.macro_depth -= 1;
             }
         }

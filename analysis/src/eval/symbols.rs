@@ -13,6 +13,22 @@ use std::rc::Rc;
 pub type Scope = std::collections::HashMap<String, Slot, rustc_hash::FxBuildHasher>;
 
 impl Evaluator<'_> {
+    /// Opens the scope of an include file or macro call. Macros run their bodies many
+    /// times over, so the tables of scopes that ended are kept and reused with the room
+    /// they grew, instead of being allocated and grown anew on every call.
+    pub fn push_scope(&mut self) {
+        let scope = self.spare_scopes.pop().unwrap_or_default();
+        self.scopes.push(scope);
+    }
+
+    /// Closes the newest scope; its definitions are dropped now.
+    pub fn pop_scope(&mut self) {
+        if let Some(mut scope) = self.scopes.pop() {
+            scope.clear();
+            self.spare_scopes.push(scope);
+        }
+    }
+
     /// The storage of the most local definition of `name`.
     pub fn lookup(&self, name: &str) -> Option<Slot> {
         self.lookup_in(self.scopes.len() - 1, name)
