@@ -35,6 +35,20 @@ impl Visibility {
             RayKind::Transmitted => true,
         }
     }
+
+    /// The kinds of rays that see the object, as a set of [`RayKind::bit`]s.
+    pub fn kinds(&self) -> u8 {
+        [
+            RayKind::Primary,
+            RayKind::Reflected,
+            RayKind::Transmitted,
+            RayKind::Shadow,
+            RayKind::Radiosity,
+        ]
+        .into_iter()
+        .filter(|&kind| self.sees(kind))
+        .fold(0, |set, kind| set | kind.bit())
+    }
 }
 
 /// A shape placed in the world with its material.
@@ -350,6 +364,15 @@ impl Object {
         match self {
             Object::Leaf(l) => l.bounds,
             Object::Csg(c) => c.bounds,
+        }
+    }
+
+    /// The kinds of rays that may meet the object, as a set of [`RayKind::bit`]s: those
+    /// that see one of its leaves.
+    pub fn kinds(&self) -> u8 {
+        match self {
+            Object::Leaf(l) => l.visibility.kinds(),
+            Object::Csg(c) => c.children.iter().fold(0, |set, o| set | o.kinds()),
         }
     }
 

@@ -33,3 +33,10 @@ pub enum RayKind {
     /// Gathering indirect light for radiosity.
     Radiosity,
 }
+
+impl RayKind {
+    /// The kind's bit in a set of kinds (see [`Visibility::kinds`](crate::object::Visibility::kinds)).
+    pub fn bit(self) -> u8 {
+        1 << self as u8
+    }
+}

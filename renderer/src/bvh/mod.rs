@@ -27,12 +27,13 @@ impl Bvh {
             .filter(|o| !o.bounds().is_empty())
             .partition(|o| o.bounds().is_finite());
         let boxes: Vec<Aabb> = bounded.iter().map(Object::bounds).collect();
-        let (tree, order) = Tree::build(&boxes, LEAF_SIZE);
+        let (mut tree, order) = Tree::build(&boxes, LEAF_SIZE);
         let mut slots: Vec<Option<Object>> = bounded.into_iter().map(Some).collect();
-        let objects = order
+        let objects: Vec<Object> = order
             .iter()
             .filter_map(|&i| slots[i as usize].take())
             .collect();
+        tree.restrict_kinds(|i| objects[i].kinds());
         Bvh {
             tree,
             objects,
@@ -97,8 +98,13 @@ impl Bvh {
             }
         }
         let ray = q.ray;
-        self.tree
-            .traverse(&ray, q.inv_dir, q.tmin, q.tmax, |range, tmax| {
+        self.tree.traverse(
+            &ray,
+            q.inv_dir,
+            q.tmin,
+            q.tmax,
+            q.kind.bit(),
+            |range, tmax| {
                 q.tmax = tmax;
                 for object in &self.objects[range] {
                     if let Some(hit) = object.nearest(&q, scratch)
@@ -108,7 +114,8 @@ impl Bvh {
                     }
                 }
                 q.tmax
-            });
+            },
+        );
         best
     }
 }

@@ -33,6 +33,10 @@ struct Node {
     count: u32,
     /// The axis an inner node splits, which orders its children along a ray.
     axis: u8,
+    /// The kinds of rays that see some item under the node (a set of
+    /// [`RayKind::bit`](crate::ray::RayKind::bit)s): every kind until
+    /// [`Tree::restrict_kinds`] says otherwise.
+    kinds: u8,
 }
 
 /// The flattened hierarchy.
@@ -77,6 +81,22 @@ impl Tree {
         (Tree { nodes }, order)
     }
 
+    /// Marks each node with the kinds of rays that see some item under it, given those of
+    /// each item in the tree's order, so that [`Tree::traverse`] skips subtrees no ray of
+    /// its kind sees (the scene's `no_shadow` objects, for shadow rays).
+    pub fn restrict_kinds(&mut self, item_kinds: impl Fn(usize) -> u8) {
+        // Children follow their parent, so going backwards meets them first.
+        for i in (0..self.nodes.len()).rev() {
+            let node = self.nodes[i];
+            self.nodes[i].kinds = if node.count > 0 {
+                let start = node.index as usize;
+                (start..start + node.count as usize).fold(0, |set, item| set | item_kinds(item))
+            } else {
+                self.nodes[i + 1].kinds | self.nodes[node.index as usize].kinds
+            };
+        }
+    }
+
     /// The box around every item; empty for an empty tree.
     pub fn bounds(&self) -> Aabb {
         self.nodes.first().map_or(Aabb::EMPTY, |n| n.bounds)
@@ -88,7 +108,8 @@ impl Tree {
     }
 
     /// Calls `visit` with the items of every leaf whose box the ray crosses within
-    /// `[tmin, tmax]`, the nearer child of each node first. `visit` returns the interval's
+    /// `[tmin, tmax]` and whose items rays of `kind` (a [`RayKind::bit`](crate::ray::RayKind::bit),
+    /// or every bit for any ray) may see, the nearer child of each node first. `visit` returns the interval's
     /// new end (the nearest hit so far, for a nearest-hit search), which culls the leaves
     /// beyond it; an end before `tmin` stops the traversal (a search that found what it
     /// wanted).
@@ -98,6 +119,7 @@ impl Tree {
         inv_dir: DVec3,
         tmin: f64,
         mut tmax: f64,
+        kind: u8,
         mut visit: impl FnMut(Range<usize>, f64) -> f64,
     ) {
         if self.nodes.is_empty() {
@@ -113,7 +135,7 @@ impl Tree {
         while top > 0 {
             top -= 1;
             let node = &self.nodes[stack[top] as usize];
-            if node.bounds.clip(ray, inv_dir, tmin, tmax).is_none() {
+            if node.kinds & kind == 0 || node.bounds.clip(ray, inv_dir, tmin, tmax).is_none() {
                 continue;
             }
             if node.count > 0 {
@@ -161,6 +183,7 @@ fn build_node(
                 index: offset as u32,
                 count: items.len() as u32,
                 axis: 0,
+                kinds: u8::MAX,
             });
             return;
         }
@@ -171,6 +194,7 @@ fn build_node(
         index: 0,
         count: 0,
         axis: axis as u8,
+        kinds: u8::MAX,
     });
     let (near, far) = items.split_at_mut(left);
     build_node(near, offset, depth + 1, max_leaf, nodes);
@@ -318,6 +342,19 @@ mod tests {
         Aabb::new(at - DVec3::splat(0.5), at + DVec3::splat(0.5))
     }
 
+    /// A hundred unit boxes in a row along +z, two units apart.
+    fn boxes_along_z() -> Vec<Aabb> {
+        (0..100)
+            .map(|i| unit_box(DVec3::new(0.0, 0.0, 2.0 * i as f64)))
+            .collect()
+    }
+
+    /// Traverses with rays of `kind` along +z from z = -5.
+    fn along_z(tree: &Tree, kind: u8, visit: impl FnMut(Range<usize>, f64) -> f64) {
+        let ray = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
+        tree.traverse(&ray, ray.direction.recip(), 0.0, f64::INFINITY, kind, visit);
+    }
+
     /// Every item the ray's box test admits, by brute force and through the tree.
     fn crossed(tree: &Tree, order: &[u32], boxes: &[Aabb], ray: &Ray) -> (Vec<u32>, Vec<u32>) {
         let inv = ray.direction.recip();
@@ -329,7 +366,7 @@ mod tests {
             })
             .collect();
         let mut found = Vec::new();
-        tree.traverse(ray, inv, 0.0, f64::INFINITY, |range, tmax| {
+        tree.traverse(ray, inv, 0.0, f64::INFINITY, u8::MAX, |range, tmax| {
             for &i in &order[range] {
                 if boxes[i as usize]
                     .clip(ray, inv, 0.0, f64::INFINITY)
@@ -374,56 +411,72 @@ mod tests {
     }
 
     #[test]
+    fn traversal_skips_subtrees_no_ray_of_its_kind_sees() {
+        // A row of boxes along z; only every tenth is seen by the second kind of ray.
+        let boxes = boxes_along_z();
+        let (mut tree, order) = Tree::build(&boxes, 2);
+        let kinds = |item: u32| if item.is_multiple_of(10) { 0b11 } else { 0b01 };
+        tree.restrict_kinds(|i| kinds(order[i]));
+        let leaves = |kind: u8| {
+            let mut items: Vec<u32> = Vec::new();
+            let mut leaves = 0;
+            along_z(&tree, kind, |range, tmax| {
+                leaves += 1;
+                items.extend(
+                    order[range]
+                        .iter()
+                        .copied()
+                        .filter(|&i| kinds(i) & kind != 0),
+                );
+                tmax
+            });
+            items.sort_unstable();
+            (items, leaves)
+        };
+        let (all, all_leaves) = leaves(0b01);
+        assert_eq!(all, (0..100).collect::<Vec<u32>>());
+        let (tenths, tenth_leaves) = leaves(0b10);
+        assert_eq!(tenths, (0..100).step_by(10).collect::<Vec<u32>>());
+        // Only the leaves holding a tenth box are visited.
+        assert!(
+            tenth_leaves <= 10 && tenth_leaves < all_leaves,
+            "{tenth_leaves}"
+        );
+        assert_eq!(leaves(0b100), (Vec::new(), 0));
+    }
+
+    #[test]
     fn coincident_boxes_still_make_small_leaves() {
         let boxes = vec![unit_box(DVec3::ZERO); 1000];
         let (tree, _) = Tree::build(&boxes, 4);
         assert!(tree.nodes.iter().all(|n| n.count <= 4));
         let mut seen = 0;
-        let ray = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
-        tree.traverse(
-            &ray,
-            ray.direction.recip(),
-            0.0,
-            f64::INFINITY,
-            |range, tmax| {
-                seen += range.len();
-                tmax
-            },
-        );
+        along_z(&tree, u8::MAX, |range, tmax| {
+            seen += range.len();
+            tmax
+        });
         assert_eq!(seen, 1000);
     }
 
     #[test]
     fn the_interval_end_culls_far_leaves() {
-        let boxes: Vec<Aabb> = (0..100)
-            .map(|i| unit_box(DVec3::new(0.0, 0.0, 2.0 * i as f64)))
-            .collect();
+        let boxes = boxes_along_z();
         let (tree, order) = Tree::build(&boxes, 1);
-        let ray = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
         let mut visited = Vec::new();
-        tree.traverse(
-            &ray,
-            ray.direction.recip(),
-            0.0,
-            f64::INFINITY,
-            |range, _| {
-                visited.extend_from_slice(&order[range]);
-                // The first box hit ends the search at its far side.
-                5.5
-            },
-        );
+        along_z(&tree, u8::MAX, |range, _| {
+            visited.extend_from_slice(&order[range]);
+            // The first box hit ends the search at its far side.
+            5.5
+        });
         assert_eq!(visited, vec![0]);
     }
 
     #[test]
     fn an_end_before_the_start_stops_the_traversal() {
-        let boxes: Vec<Aabb> = (0..100)
-            .map(|i| unit_box(DVec3::new(0.0, 0.0, 2.0 * i as f64)))
-            .collect();
+        let boxes = boxes_along_z();
         let (tree, _) = Tree::build(&boxes, 1);
-        let ray = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
         let mut leaves = 0;
-        tree.traverse(&ray, ray.direction.recip(), 0.0, f64::INFINITY, |_, _| {
+        along_z(&tree, u8::MAX, |_, _| {
             leaves += 1;
             f64::NEG_INFINITY
         });

@@ -87,8 +87,13 @@ impl MeshData {
     /// Calls `hit` with every crossing of the ray with a triangle in `[tmin, tmax]`, as
     /// (parameter, face index); `hit` returns the interval's new end.
     fn crossings(&self, ray: &Ray, tmin: f64, tmax: f64, mut hit: impl FnMut(f64, u32) -> f64) {
-        self.tree
-            .traverse(ray, ray.direction.recip(), tmin, tmax, |range, mut end| {
+        self.tree.traverse(
+            ray,
+            ray.direction.recip(),
+            tmin,
+            tmax,
+            u8::MAX,
+            |range, mut end| {
                 for i in range {
                     if let Some(t) = crossing(ray, self.corners(&self.faces[i]))
                         && t >= tmin
@@ -98,7 +103,8 @@ impl MeshData {
                     }
                 }
                 end
-            });
+            },
+        );
     }
 }
 
