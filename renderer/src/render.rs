@@ -121,6 +121,15 @@ impl Region {
     }
 }
 
+/// Rows antialiasing method 2 traces one after another, sharing the samples on the
+/// edges between them; more rows share more, fewer leave more runs to trace in parallel.
+/// On wasm32 (one thread) every row is in one run.
+const SHARED_ROWS: usize = if cfg!(target_arch = "wasm32") {
+    usize::MAX
+} else {
+    8
+};
+
 /// Maps `f` over `0..count`, in parallel where threads exist.
 fn map_rows<T: Send>(count: usize, f: impl Fn(usize) -> T + Sync + Send) -> Vec<T> {
     #[cfg(not(target_arch = "wasm32"))]
@@ -225,23 +234,32 @@ fn method2(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
             .map(|x| sampler.compared(sampler.trace(&mut tracer, f64::from(x), y)))
             .collect()
     });
-    map_rows(corner_rows - 1, |row| {
+    // Runs of rows share one subdivider, which passes the samples on the edges between
+    // them from row to row; the runs are traced in parallel where threads exist.
+    let rows = corner_rows - 1;
+    let runs = map_rows(rows.div_ceil(SHARED_ROWS), |run| {
         let mut tracer = Tracer::new(sampler.world);
-        let mut subdivider = Subdivider::new(sampler.depth);
-        (0..region.columns())
-            .map(|col| {
-                let c = [
-                    &corners[row][col],
-                    &corners[row][col + 1],
-                    &corners[row + 1][col],
-                    &corners[row + 1][col + 1],
-                ];
-                let x = region.x0 + col as u32;
-                let y = region.y0 + row as u32;
-                subdivider.pixel(sampler, &mut tracer, x, y, c)
+        let mut subdivider = Subdivider::new(sampler.depth, region.columns());
+        (run * SHARED_ROWS..(run + 1).saturating_mul(SHARED_ROWS).min(rows))
+            .map(|row| {
+                subdivider.start_row();
+                (0..region.columns())
+                    .map(|col| {
+                        let c = [
+                            &corners[row][col],
+                            &corners[row][col + 1],
+                            &corners[row + 1][col],
+                            &corners[row + 1][col + 1],
+                        ];
+                        let x = region.x0 + col as u32;
+                        let y = region.y0 + row as u32;
+                        subdivider.pixel(sampler, &mut tracer, (col, x, y), c)
+                    })
+                    .collect()
             })
-            .collect()
-    })
+            .collect::<Vec<Vec<Sample>>>()
+    });
+    runs.into_iter().flatten().collect()
 }
 
 /// The file's transfer curve: tabulated for sRGB, whose linear toe the table follows to
@@ -341,6 +359,19 @@ mod tests {
             settings: Default::default(),
             version: Some(3.7),
         }
+    }
+
+    /// An orange sphere filling the middle of the picture.
+    fn orange_sphere() -> Scene {
+        let mut sphere = Object::new(
+            Shape::Sphere {
+                center: DVec3::ZERO,
+                radius: 15.0,
+            },
+            None,
+        );
+        sphere.texture = texture(DVec3::new(0.8, 0.5, 0.2));
+        scene_of(vec![sphere])
     }
 
     #[test]
@@ -458,16 +489,67 @@ mod tests {
     }
 
     #[test]
+    fn pixels_sharing_edge_samples_match_pixels_sampled_alone() {
+        let scene = orange_sphere();
+        let settings = BuildSettings {
+            quality: 9,
+            output_alpha: false,
+            max_trace_level: None,
+        };
+        let world = build_world(&scene, settings).unwrap();
+        let camera = Camera::from_scene(&scene.camera).unwrap();
+        let (width, height) = (24, 18);
+        let region = Region {
+            x0: 0,
+            x1: width - 1,
+            y0: 0,
+            y1: height - 1,
+        };
+        let compare = CompareCurve {
+            working: Curve::Identity,
+            aa: EncodeTable::new(Curve::Power(2.5)),
+        };
+        // A threshold of 0 splits every pixel down to the last level, so that every edge
+        // sample is shared.
+        let sampler = Sampler {
+            world: &world,
+            camera: &camera,
+            width: f64::from(width),
+            height: f64::from(height),
+            threshold: 0.0,
+            depth: 3,
+            jitter: 1.0,
+            compare,
+        };
+        let shared = method2(&sampler, &region);
+        let mut tracer = Tracer::new(&world);
+        let mut corner = |x: u32, y: u32| {
+            sampler.compared(sampler.trace(&mut tracer, f64::from(x), f64::from(y)))
+        };
+        for y in 0..height {
+            for x in 0..width {
+                let c = [
+                    corner(x, y),
+                    corner(x + 1, y),
+                    corner(x, y + 1),
+                    corner(x + 1, y + 1),
+                ];
+                let mut alone = Subdivider::new(sampler.depth, 1);
+                let mut tracer = Tracer::new(&world);
+                let s = alone.pixel(
+                    &sampler,
+                    &mut tracer,
+                    (0, x, y),
+                    [&c[0], &c[1], &c[2], &c[3]],
+                );
+                assert_eq!(shared[y as usize][x as usize], s, "{x} {y}");
+            }
+        }
+    }
+
+    #[test]
     fn partial_renders_match_the_full_render_where_they_draw() {
-        let mut sphere = Object::new(
-            Shape::Sphere {
-                center: DVec3::ZERO,
-                radius: 15.0,
-            },
-            None,
-        );
-        sphere.texture = texture(DVec3::new(0.8, 0.5, 0.2));
-        let scene = scene_of(vec![sphere]);
+        let scene = orange_sphere();
         let full_options = RenderOptions {
             width: 32,
             height: 24,
@@ -493,15 +575,7 @@ mod tests {
 
     #[test]
     fn low_quality_shows_pigments_under_full_ambient() {
-        let mut sphere = Object::new(
-            Shape::Sphere {
-                center: DVec3::ZERO,
-                radius: 15.0,
-            },
-            None,
-        );
-        sphere.texture = texture(DVec3::new(0.8, 0.5, 0.2));
-        let scene = scene_of(vec![sphere]);
+        let scene = orange_sphere();
         let options = RenderOptions {
             width: 8,
             height: 6,

@@ -120,8 +120,10 @@ fn mix(mut z: u64) -> u64 {
     z ^ (z >> 31)
 }
 
-/// Method 2 for one pixel whose corner samples are known: `corners` are top-left,
-/// top-right, bottom-left, bottom-right.
+/// Method 2 for the pixels of a run of rows, left to right and top to bottom, whose
+/// corner samples are known. A pixel's edges are its neighbours' too: the samples a split
+/// pixel traces on its right and bottom edges are kept for the pixel right of it and the
+/// one below, which would trace the very same positions (the jitter follows the position).
 pub struct Subdivider {
     /// Samples of the current pixel on a grid of `side` × `side` points.
     grid: Vec<Compared>,
@@ -130,30 +132,44 @@ pub struct Subdivider {
     stamp: Vec<u32>,
     generation: u32,
     side: usize,
+    /// The samples the previous pixel of the row traced on its right edge, by grid row.
+    left: Vec<(usize, Compared)>,
+    /// For each column, the samples the pixel above traced on its bottom edge, by grid
+    /// column.
+    above: Vec<Vec<(usize, Compared)>>,
 }
 
 impl Subdivider {
-    pub fn new(depth: u32) -> Subdivider {
+    pub fn new(depth: u32, columns: usize) -> Subdivider {
         let side = (1usize << depth.saturating_sub(1)) + 1;
         Subdivider {
             grid: vec![Compared::default(); side * side],
             stamp: vec![0; side * side],
             generation: 0,
             side,
+            left: Vec::new(),
+            above: vec![Vec::new(); columns],
         }
     }
 
+    /// Starts a row: its first pixel has no neighbour on the left.
+    pub fn start_row(&mut self) {
+        self.left.clear();
+    }
+
+    /// The pixel at `(x, y)` in column `col` of the run.
     pub fn pixel(
         &mut self,
         sampler: &Sampler<'_>,
         tracer: &mut Tracer<'_>,
-        x: u32,
-        y: u32,
+        (col, x, y): (usize, u32, u32),
         corners: [&Compared; 4],
     ) -> Sample {
         // Most pixels are not split: their corners are averaged where they lie, without
         // being copied into the grid first.
         if sampler.depth <= 1 || !differ_at_corners(corners, sampler.threshold) {
+            self.left.clear();
+            self.above[col].clear();
             return mean_of_corners(corners);
         }
         self.generation = self.generation.wrapping_add(1);
@@ -166,9 +182,16 @@ impl Subdivider {
         self.set(last, 0, *corners[1]);
         self.set(0, last, *corners[2]);
         self.set(last, last, *corners[3]);
+        for (gy, s) in std::mem::take(&mut self.left) {
+            self.set(0, gy, s);
+        }
+        let mut above = std::mem::take(&mut self.above[col]);
+        for &(gx, s) in &above {
+            self.set(gx, 0, s);
+        }
         // POV-Ray divides the jitter amount by 2^depth + 1.
         let scale = sampler.jitter / f64::from((1u32 << sampler.depth) + 1);
-        self.square(
+        let mean = self.square(
             sampler,
             tracer,
             (f64::from(x), f64::from(y)),
@@ -176,7 +199,20 @@ impl Subdivider {
             last,
             sampler.depth.saturating_sub(1),
             scale,
-        )
+        );
+        self.left = (1..last)
+            .filter_map(|gy| self.traced(last, gy).map(|s| (gy, s)))
+            .collect();
+        above.clear();
+        above.extend((1..last).filter_map(|gx| self.traced(gx, last).map(|s| (gx, s))));
+        self.above[col] = above;
+        mean
+    }
+
+    /// The sample at a grid point if the current pixel has one there.
+    fn traced(&self, bx: usize, by: usize) -> Option<Compared> {
+        let i = by * self.side + bx;
+        (self.stamp[i] == self.generation).then_some(self.grid[i])
     }
 
     fn set(&mut self, bx: usize, by: usize, s: Compared) {
