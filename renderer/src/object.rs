@@ -104,7 +104,7 @@ impl Leaf {
     ) -> Leaf {
         let identity = to_world == DAffine3::IDENTITY;
         let to_local = to_world.inverse();
-        let bounds = shape.bounds().transformed(&to_world);
+        let bounds = shape.world_bounds(&to_world);
         Leaf {
             shape,
             to_local: (!identity).then_some(to_local),

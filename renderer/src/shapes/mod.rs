@@ -46,7 +46,7 @@ pub use triangle::Triangle;
 use crate::bounds::Aabb;
 use crate::fast_math;
 use crate::ray::Ray;
-use glam::DVec3;
+use glam::{DAffine3, DVec3};
 
 /// Where a ray crosses a shape: the ray parameter and which part of the surface (a box
 /// face, a cylinder cap, a mesh triangle), so that the normal can be found later for the
@@ -265,6 +265,33 @@ impl Shape {
             Shape::Math(s) => s.bounds(),
         }
     }
+
+    /// Bounds in the world once `to_world` places the shape. A sphere and a torus get the
+    /// box of their own surface rather than the box around their transformed canonical
+    /// box, which a rotated ring overfills by up to half its width along each axis.
+    pub fn world_bounds(&self, to_world: &DAffine3) -> Aabb {
+        match self {
+            Shape::Sphere(_) => ring_bounds(0.0, 1.0, to_world),
+            Shape::Torus(s) => ring_bounds(s.major, s.minor, to_world),
+            _ => self.bounds().transformed(to_world),
+        }
+    }
+}
+
+/// The box around the ring of radius `major` in the canonical x-z plane, thickened by a
+/// ball of radius `minor`, after `to_world`. Along each world axis the half extent is the
+/// sum of the circle's and the (ellipsoidal) ball's, both exact: the widths of a sum of
+/// two sets add.
+fn ring_bounds(major: f64, minor: f64, to_world: &DAffine3) -> Aabb {
+    let m = to_world.matrix3;
+    let (x, y, z) = (m.x_axis, m.y_axis, m.z_axis);
+    let circle = (x * x + z * z).map(f64::sqrt) * major;
+    let ball = (x * x + y * y + z * z).map(f64::sqrt) * minor;
+    let centre = to_world.translation;
+    // A margin of a few units in the last place keeps rounding from cutting the surface.
+    let half = circle + ball;
+    let half = half + (half + centre.abs()) * 1e-12;
+    Aabb::new(centre - half, centre + half)
 }
 
 /// The roots of `a t² + 2 b t + c = 0`, in the form that loses no precision when `b²` is
@@ -293,6 +320,47 @@ pub(crate) fn solve_quadratic_half(a: f64, b: f64, c: f64) -> Option<(f64, f64)>
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_placed_torus_is_bounded_by_its_own_box() {
+        let torus = Shape::Torus(Torus {
+            major: 2.0,
+            minor: 0.25,
+            sturm: false,
+        });
+        // Tilted, stretched along one axis and moved, as a matrix in a scene may.
+        let to_world = DAffine3::from_translation(DVec3::new(1.0, -2.0, 3.0))
+            * DAffine3::from_axis_angle(DVec3::new(1.0, 2.0, 0.5).normalize(), 0.7)
+            * DAffine3::from_scale(DVec3::new(1.0, 1.5, 0.8));
+        let tight = torus.world_bounds(&to_world);
+        let loose = torus.bounds().transformed(&to_world);
+        // Points all over the surface: inside the box, and reaching each of its faces.
+        let mut reach = Aabb::EMPTY;
+        for i in 0..400 {
+            for j in 0..40 {
+                let (u, v) = (i as f64 * std::f64::consts::TAU / 400.0, j as f64 * 0.157);
+                let ring = DVec3::new(u.cos(), 0.0, u.sin());
+                let local = ring * 2.0 + (ring * v.cos() + DVec3::Y * v.sin()) * 0.25;
+                let p = to_world.transform_point3(local);
+                assert!(
+                    tight
+                        .clip(&Ray::new(p, DVec3::X), DVec3::X, 0.0, 0.0)
+                        .is_some()
+                );
+                reach = reach.union(&Aabb::new(p, p));
+            }
+        }
+        assert!(
+            (reach.min - tight.min).abs().max_element() < 1e-3,
+            "{reach:?} {tight:?}"
+        );
+        assert!(
+            (reach.max - tight.max).abs().max_element() < 1e-3,
+            "{reach:?} {tight:?}"
+        );
+        let volume = |b: Aabb| (b.max - b.min).element_product();
+        assert!(volume(tight) < 0.8 * volume(loose));
+    }
 
     #[test]
     fn quadratic_is_stable() {
