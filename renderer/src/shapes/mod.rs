@@ -196,7 +196,10 @@ impl Shape {
             _ => {}
         }
         let mut roots = Roots::new();
-        self.intersect(ray, &mut roots);
+        match self {
+            Shape::Torus(s) => s.intersect_within(ray, tmin, tmax, &mut roots),
+            _ => self.intersect(ray, &mut roots),
+        }
         roots
             .as_slice()
             .iter()

@@ -19,6 +19,15 @@ pub struct Torus {
 
 impl Torus {
     pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
+        self.intersect_within(ray, f64::NEG_INFINITY, f64::INFINITY, roots);
+    }
+
+    /// Every crossing when some may lie inside `[tmin, tmax]`, none otherwise: the interval
+    /// culls more rays than the tube's bounds do, those whose crossings a nearer hit
+    /// already hides above all. The quartic is solved over the span where the ray is in
+    /// the tube's bounds whatever the interval, so that a crossing comes out the same for
+    /// every query.
+    pub fn intersect_within(&self, ray: &Ray, tmin: f64, tmax: f64, roots: &mut Roots) {
         let (big, small) = (self.major, self.minor);
         // Work from where the ray enters the bounding sphere, so that the quartic's
         // coefficients stay of the torus's own size.
@@ -40,7 +49,8 @@ impl Torus {
         } else if o.y.abs() > small {
             return;
         }
-        if t0 > t1 {
+        let (near, far) = (max(t0, tmin), min(t1, tmax));
+        if near > far {
             return;
         }
         let rho2 = |t: f64| {
@@ -48,9 +58,9 @@ impl Torus {
             x * x + z * z
         };
         let (e, f) = (d.x * d.x + d.z * d.z, o.x * d.x + o.z * d.z);
-        let apex = if e > 0.0 { -f / e } else { t0 };
-        let nearest = rho2(apex.clamp(t0, t1));
-        let farthest = max(rho2(t0), rho2(t1));
+        let apex = if e > 0.0 { -f / e } else { near };
+        let nearest = rho2(apex.clamp(near, far));
+        let farthest = max(rho2(near), rho2(far));
         // The hole around the axis exists only when the tube is thinner than the ring; a
         // spindle torus (minor above major) reaches the axis.
         let hole = if big > small { big - small } else { 0.0 };
@@ -119,6 +129,29 @@ mod tests {
         let mut roots = Roots::new();
         torus.intersect(ray, &mut roots);
         roots.as_slice().iter().map(|r| r.t).collect()
+    }
+
+    #[test]
+    fn an_interval_keeps_the_crossings_it_may_hold() {
+        let torus = Torus {
+            major: 2.0,
+            minor: 0.5,
+            sturm: false,
+        };
+        let ray = Ray::new(DVec3::new(-5.0, 0.2, 0.0), DVec3::X);
+        let all = crossings(&torus, &ray);
+        assert_eq!(all.len(), 4);
+        let within = |tmin: f64, tmax: f64| {
+            let mut roots = Roots::new();
+            torus.intersect_within(&ray, tmin, tmax, &mut roots);
+            roots.as_slice().iter().map(|r| r.t).collect::<Vec<f64>>()
+        };
+        // An interval reaching the tube gives the very same crossings; one ending before
+        // it, or lying in the hole, gives none.
+        assert_eq!(within(0.0, 3.0), all);
+        assert_eq!(within(6.0, 6.5), all);
+        assert!(within(0.0, 2.4).is_empty());
+        assert!(within(4.0, 6.0).is_empty());
     }
 
     #[test]
