@@ -272,10 +272,19 @@ impl Shape {
     /// Bounds in the world once `to_world` places the shape. A sphere and a torus get the
     /// box of their own surface rather than the box around their transformed canonical
     /// box, which a rotated ring overfills by up to half its width along each axis.
+    /// Without a rotation or shear the two boxes are the same, and the canonical one is
+    /// exact: it is kept there, so that `min_extent` of a moved sphere reads POV-Ray's
+    /// `<-1, 0, 1>` and not the tight box's rounding margin (`-0.000000`).
     pub fn world_bounds(&self, to_world: &DAffine3) -> Aabb {
+        let m = to_world.matrix3;
+        let axis_aligned = [
+            m.x_axis.y, m.x_axis.z, m.y_axis.x, m.y_axis.z, m.z_axis.x, m.z_axis.y,
+        ]
+        .iter()
+        .all(|&v| v == 0.0);
         match self {
-            Shape::Sphere(_) => ring_bounds(0.0, 1.0, to_world),
-            Shape::Torus(s) => ring_bounds(s.major, s.minor, to_world),
+            Shape::Sphere(_) if !axis_aligned => ring_bounds(0.0, 1.0, to_world),
+            Shape::Torus(s) if !axis_aligned => ring_bounds(s.major, s.minor, to_world),
             _ => self.bounds().transformed(to_world),
         }
     }
