@@ -100,7 +100,9 @@ impl MediaMap {
         if found.is_empty() || r2 <= 0.0 {
             return;
         }
-        let volume = 4.0 / 3.0 * std::f64::consts::PI * f64::from(r2).powf(1.5);
+        // r³ by one square root: powf is a software routine in WebAssembly.
+        let r2 = f64::from(r2);
+        let volume = 4.0 / 3.0 * std::f64::consts::PI * r2 * r2.sqrt();
         for &(_, index) in found.iter() {
             let photon = self.tree.photon(index);
             let back = -photon.direction.as_dvec3();
