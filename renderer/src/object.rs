@@ -312,6 +312,13 @@ impl Csg {
                 (children[0].bounds().intersection(&region), region)
             }
         };
+        let (bounds, region) = match kind {
+            CsgKind::Intersection | CsgKind::Clip => match shared_frame_region(&children) {
+                Some(shared) => (bounds.intersection(&shared), region.intersection(&shared)),
+                None => (bounds, region),
+            },
+            CsgKind::Union | CsgKind::Merge => (bounds, region),
+        };
         Csg {
             kind,
             children,
@@ -319,6 +326,35 @@ impl Csg {
             region,
         }
     }
+}
+
+/// The box around the inside of an intersection (or a clip) whose parts are all leaves
+/// placed by one transformation, from their boxes met in that shared frame: a cylinder cut
+/// by two planes is a finite piece there, while in the world, once rotated, each part's
+/// box is infinite along every axis and so is their meeting. `None` for other parts.
+fn shared_frame_region(children: &[Object]) -> Option<Aabb> {
+    let mut frame = None;
+    let mut local = Aabb::INFINITE;
+    for child in children {
+        let Object::Leaf(leaf) = child else {
+            return None;
+        };
+        if *frame.get_or_insert(leaf.to_local) != leaf.to_local {
+            return None;
+        }
+        if !leaf.inverse {
+            local = local.intersection(&leaf.shape.bounds());
+        }
+    }
+    if local.is_empty() || !local.is_finite() {
+        return None;
+    }
+    let to_world = frame?.map_or(DAffine3::IDENTITY, |m| m.inverse());
+    let world = local.transformed(&to_world);
+    // The frame is the inverse of an inverse, a few ulps off the leaves' own: a hair
+    // wider keeps every crossing inside.
+    let pad = DVec3::splat(1e-9 * world.min.abs().max(world.max.abs()).max_element());
+    Some(Aabb::new(world.min - pad, world.max + pad))
 }
 
 /// The children of an intersection with those that are intersections themselves replaced
@@ -585,6 +621,27 @@ mod tests {
         assert_eq!(nearest(DVec3::new(0.5, 0.6, -5.0), DVec3::Z), Some(4.0));
         let bore = nearest(DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
         assert!(bore.is_none());
+    }
+
+    /// A tilted cylinder cut by two planes is bounded although each of its parts is
+    /// unbounded, and its box holds the piece: its rim's farthest points.
+    #[test]
+    fn a_clipped_cylinder_is_bounded() {
+        let world = crate::build::world_of_source(
+            "quadric { <1, 0, 1>, <0, 0, 0>, <0, 0, 0>, -0.25
+               clipped_by { plane { y, 1.2 } plane { -y, 1 } }
+               rotate z*30 translate <3, 0, 2> }",
+        );
+        assert!(!world.bvh.has_unbounded());
+        let b = world.bvh.bounds();
+        let tilt = DAffine3::from_translation(DVec3::new(3.0, 0.0, 2.0))
+            * DAffine3::from_rotation_z(30f64.to_radians());
+        for (y, x) in [(1.2, -0.5), (1.2, 0.5), (-1.0, -0.5), (-1.0, 0.5)] {
+            let p = tilt.transform_point3(DVec3::new(x, y, 0.0));
+            assert!(p.cmpge(b.min).all() && p.cmple(b.max).all(), "{p} {b:?}");
+        }
+        let end = tilt.transform_point3(DVec3::new(-0.5, 1.2, 0.0));
+        assert!((b.min.x - end.x).abs() < 1e-6, "{b:?}");
     }
 
     /// Scenes hold up to a hundred thousand objects and more; an object stays a few

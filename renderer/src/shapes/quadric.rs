@@ -20,6 +20,9 @@ pub struct Quadric {
     /// Where the surface is looked for: the `bounded_by` box or the ellipsoid's own, in
     /// the shape's frame.
     region: Option<Aabb>,
+    /// The box around the surface: the region, or a cylinder's box, infinite along its
+    /// axis, or the infinite box.
+    extent: Aabb,
 }
 
 impl Quadric {
@@ -38,40 +41,20 @@ impl Quadric {
             DVec3::new(mixed.x / 2.0, squares.y, mixed.z / 2.0),
             DVec3::new(mixed.y / 2.0, mixed.z / 2.0, squares.z),
         );
-        let mut quadric = Quadric {
-            matrix,
-            linear,
-            constant,
-            region: None,
-        };
-        quadric.region = match (bounded, quadric.ellipsoid_box()) {
+        let region = match (bounded, ellipsoid_box(matrix, linear, constant)) {
             (Some(a), Some(b)) => Some(a.intersection(&b)),
             (a, b) => a.or(b),
         };
-        quadric
-    }
-
-    /// The box around a quadric that is an ellipsoid (its matrix M positive definite, so
-    /// that its inside is the bounded one), for the hierarchy and the root search; `None`
-    /// for the unbounded quadrics. The centre is `-M⁻¹g/2`, and the surface is `yᵀMy = k`
-    /// around it with `k = x₀ᵀMx₀ - J`, reaching `√(k (M⁻¹)ᵢᵢ)` along axis `i`.
-    fn ellipsoid_box(&self) -> Option<Aabb> {
-        let m = self.matrix;
-        let minor2 = m.x_axis.x * m.y_axis.y - m.x_axis.y * m.x_axis.y;
-        if !(m.x_axis.x > 0.0 && minor2 > 0.0 && m.determinant() > 0.0) {
-            return None;
+        let extent = region
+            .or_else(|| cylinder_box(matrix, linear, constant))
+            .unwrap_or(Aabb::INFINITE);
+        Quadric {
+            matrix,
+            linear,
+            constant,
+            region,
+            extent,
         }
-        let inverse = m.inverse();
-        let centre = -0.5 * (inverse * self.linear);
-        let k = centre.dot(m * centre) - self.constant;
-        if !(k > 0.0 && k.is_finite()) {
-            return None;
-        }
-        let reach = DVec3::new(inverse.x_axis.x, inverse.y_axis.y, inverse.z_axis.z) * k;
-        let reach = DVec3::new(reach.x.sqrt(), reach.y.sqrt(), reach.z.sqrt());
-        // A hair wider, so that roots on the box's faces are not lost to rounding.
-        let reach = reach * (1.0 + 1e-9) + DVec3::splat(1e-12 * reach.max_element());
-        Some(Aabb::new(centre - reach, centre + reach))
     }
 
     pub fn value(&self, p: DVec3) -> f64 {
@@ -88,7 +71,7 @@ impl Quadric {
     }
 
     pub fn bounds(&self) -> Aabb {
-        self.region.unwrap_or(Aabb::INFINITE)
+        self.extent
     }
 
     /// The crossings of the ray, ascending, at most two. The quadratic is built around a
@@ -130,6 +113,55 @@ impl Quadric {
         let (found, n) = self.roots(ray);
         found[..n].iter().copied().find(|&t| t > tmin && t < tmax)
     }
+}
+
+/// The box around a quadric that is an ellipsoid (its matrix M positive definite, so that
+/// its inside is the bounded one), for the hierarchy and the root search; `None` for the
+/// unbounded quadrics. The centre is `-M⁻¹g/2`, and the surface is `yᵀMy = k` around it
+/// with `k = x₀ᵀMx₀ - J`, reaching `√(k (M⁻¹)ᵢᵢ)` along axis `i`.
+fn ellipsoid_box(m: DMat3, linear: DVec3, constant: f64) -> Option<Aabb> {
+    let minor2 = m.x_axis.x * m.y_axis.y - m.x_axis.y * m.x_axis.y;
+    if !(m.x_axis.x > 0.0 && minor2 > 0.0 && m.determinant() > 0.0) {
+        return None;
+    }
+    let inverse = m.inverse();
+    let centre = -0.5 * (inverse * linear);
+    let k = centre.dot(m * centre) - constant;
+    if !(k > 0.0 && k.is_finite()) {
+        return None;
+    }
+    let reach = DVec3::new(inverse.x_axis.x, inverse.y_axis.y, inverse.z_axis.z) * k;
+    let reach = DVec3::new(reach.x.sqrt(), reach.y.sqrt(), reach.z.sqrt());
+    // A hair wider, so that roots on the box's faces are not lost to rounding.
+    let reach = reach * (1.0 + 1e-9) + DVec3::splat(1e-12 * reach.max_element());
+    Some(Aabb::new(centre - reach, centre + reach))
+}
+
+/// The box around a quadric that does not depend on one or two of the axes (no square,
+/// mixed or linear term names them) and is an ellipse or a pair of planes across the
+/// others: a cylinder along the free axes, whose box is infinite along them. Giving each
+/// free axis a square of its own turns it into an ellipsoid with the same extent across
+/// them (the free axis decouples, and its centre coordinate is 0), so the ellipsoid's box
+/// gives the finite sides. `None` for other quadrics.
+fn cylinder_box(m: DMat3, linear: DVec3, constant: f64) -> Option<Aabb> {
+    let free = [0, 1, 2].map(|i| m.col(i) == DVec3::ZERO && linear[i] == 0.0);
+    if free == [false; 3] || free == [true; 3] {
+        return None;
+    }
+    let mut closed = m;
+    for (i, &free) in free.iter().enumerate() {
+        if free {
+            closed.col_mut(i)[i] = 1.0;
+        }
+    }
+    let mut b = ellipsoid_box(closed, linear, constant)?;
+    for (i, &free) in free.iter().enumerate() {
+        if free {
+            b.min[i] = f64::NEG_INFINITY;
+            b.max[i] = f64::INFINITY;
+        }
+    }
+    Some(b)
 }
 
 #[cfg(test)]
@@ -226,7 +258,11 @@ mod tests {
     }
 
     fn ellipsoid_box(squares: DVec3, mixed: DVec3, linear: DVec3, constant: f64) -> Option<Aabb> {
-        Quadric::new(squares, mixed, linear, constant, None).region
+        super::ellipsoid_box(
+            Quadric::new(squares, mixed, linear, constant, None).matrix,
+            linear,
+            constant,
+        )
     }
 
     #[test]
@@ -254,7 +290,8 @@ mod tests {
             ),
             "{b:?}"
         );
-        // A hyperboloid, a cylinder, an inside-out sphere and an empty one have no box.
+        // A hyperboloid, a cylinder, an inside-out sphere and an empty one have no
+        // ellipsoid's box.
         for (squares, constant) in [
             (DVec3::new(1.0, -1.0, 1.0), -0.3),
             (DVec3::new(1.0, 0.0, 1.0), -0.25),
@@ -262,6 +299,49 @@ mod tests {
             (DVec3::ONE, 1.0),
         ] {
             assert!(ellipsoid_box(squares, DVec3::ZERO, DVec3::ZERO, constant).is_none());
+        }
+    }
+
+    #[test]
+    fn cylinders_are_bounded_across_their_axis() {
+        // (x - 1)² + 4z² = 1, along y.
+        let q = Quadric::new(
+            DVec3::new(1.0, 0.0, 4.0),
+            DVec3::ZERO,
+            DVec3::new(-2.0, 0.0, 0.0),
+            0.0,
+            None,
+        );
+        let b = q.bounds();
+        assert!(close(
+            DVec3::new(b.min.x, 0.0, b.min.z),
+            DVec3::new(0.0, 0.0, -0.5)
+        ));
+        assert!(close(
+            DVec3::new(b.max.x, 0.0, b.max.z),
+            DVec3::new(2.0, 0.0, 0.5)
+        ));
+        assert!(b.min.y == f64::NEG_INFINITY && b.max.y == f64::INFINITY);
+        // The crossings are not confined to a region: a ray along the axis far out
+        // still meets the surface.
+        assert!(q.region.is_none());
+        let ray = Ray::new(DVec3::new(-5.0, 1.0e6, 0.0), DVec3::X);
+        assert_eq!(q.roots(&ray).1, 2);
+        // Two parallel planes, x² = 1, bound x alone; a hyperboloid, an inside-out
+        // cylinder and a cylinder tilted off the axes have no such box.
+        let slab = Quadric::new(DVec3::X, DVec3::ZERO, DVec3::ZERO, -1.0, None).bounds();
+        assert!(close(
+            DVec3::new(slab.min.x, slab.max.x, 0.0),
+            DVec3::new(-1.0, 1.0, 0.0)
+        ));
+        assert!(slab.min.y.is_infinite() && slab.max.z.is_infinite());
+        for (squares, mixed, constant) in [
+            (DVec3::new(1.0, -1.0, 0.0), DVec3::ZERO, -0.3),
+            (DVec3::new(-1.0, 0.0, -1.0), DVec3::ZERO, 1.0),
+            (DVec3::new(1.0, 1.0, 0.0), DVec3::new(-2.0, 0.0, 0.0), -1.0),
+        ] {
+            let q = Quadric::new(squares, mixed, DVec3::ZERO, constant, None);
+            assert_eq!(q.bounds(), Aabb::INFINITE, "{squares:?}");
         }
     }
 }
