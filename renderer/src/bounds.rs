@@ -1,6 +1,5 @@
 //! Axis-aligned bounding boxes in world space, with the slab test rays use to skip objects.
 
-use crate::fast_math::{max, min};
 use crate::ray::Ray;
 use glam::{DAffine3, DVec3};
 
@@ -107,18 +106,35 @@ impl Aabb {
         self.clip(ray, ray.direction.recip(), f64::NEG_INFINITY, f64::INFINITY)
     }
 
-    /// The parameter interval where the ray is inside the box, clipped to `[tmin, tmax]`;
-    /// `None` when it misses. `inv_dir` is the componentwise reciprocal of the direction.
+    /// The parameter interval where the ray is inside the box, clipped to `[tmin, tmax]`
+    /// (neither NaN); `None` when it misses. `inv_dir` is the componentwise reciprocal of
+    /// the direction.
+    #[inline]
     pub fn clip(&self, ray: &Ray, inv_dir: DVec3, tmin: f64, tmax: f64) -> Option<(f64, f64)> {
         let t1 = (self.min - ray.origin) * inv_dir;
         let t2 = (self.max - ray.origin) * inv_dir;
-        // NaN (0 * inf on a slab boundary) must not reject a hit: `min`/`max` drop it.
+        // NaN (0 * inf on a slab boundary) must not reject a hit: the running bounds
+        // start from `tmin` and `tmax` and so are never NaN, and a comparison with a NaN
+        // slab keeps them.
         let near = t1.min(t2);
         let far = t1.max(t2);
-        let lo = max(max(max(tmin, near.x), near.y), near.z);
-        let hi = min(min(min(tmax, far.x), far.y), far.z);
+        let lo = raise(raise(raise(tmin, near.x), near.y), near.z);
+        let hi = lower(lower(lower(tmax, far.x), far.y), far.z);
         (lo <= hi).then_some((lo, hi))
     }
+}
+
+/// The larger of the bound `x` and `y`; `x` when `y` is NaN. One instruction natively
+/// (the comparisons of `f64::max` that also drop a NaN `x` are not needed here).
+#[inline]
+fn raise(x: f64, y: f64) -> f64 {
+    if y > x { y } else { x }
+}
+
+/// The smaller of the bound `x` and `y`; `x` when `y` is NaN.
+#[inline]
+fn lower(x: f64, y: f64) -> f64 {
+    if y < x { y } else { x }
 }
 
 #[cfg(test)]

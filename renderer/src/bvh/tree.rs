@@ -19,9 +19,13 @@ const TRAVERSAL_COST: f64 = 0.5;
 /// halve the items, so that the depth stays within the traversal stack.
 const HEURISTIC_DEPTH: usize = 64;
 
-/// The deepest a node may be; the traversal stack holds one entry per level and one more.
+/// The deepest a node may be.
 const MAX_DEPTH: usize = 120;
-const STACK_SIZE: usize = MAX_DEPTH + 8;
+
+/// The traversal stack of a tree up to this deep lives in the traversal's frame; a deeper
+/// tree's is allocated. The stack holds one entry per level and one more, and a frame's
+/// array is zeroed on every traversal, so it is no larger than most trees need.
+const INLINE_STACK: usize = 48;
 
 #[derive(Debug, Clone, Copy)]
 struct Node {
@@ -43,6 +47,8 @@ struct Node {
 #[derive(Debug, Clone, Default)]
 pub struct Tree {
     nodes: Vec<Node>,
+    /// The deepest node's level, the root's being 0.
+    depth: usize,
 }
 
 /// An item while the tree is built.
@@ -74,11 +80,12 @@ impl Tree {
             })
             .collect();
         let mut nodes = Vec::with_capacity((2 * items.len() / max_leaf.max(1)).max(1));
+        let mut depth = 0;
         if !items.is_empty() {
-            build_node(&mut items, 0, 0, max_leaf.max(1), &mut nodes);
+            build_node(&mut items, 0, 0, max_leaf.max(1), &mut nodes, &mut depth);
         }
         let order = items.iter().map(|item| item.index).collect();
-        (Tree { nodes }, order)
+        (Tree { nodes, depth }, order)
     }
 
     /// Marks each node with the kinds of rays that see some item under it, given those of
@@ -118,19 +125,51 @@ impl Tree {
         ray: &Ray,
         inv_dir: DVec3,
         tmin: f64,
-        mut tmax: f64,
+        tmax: f64,
         kind: u8,
-        mut visit: impl FnMut(Range<usize>, f64) -> f64,
+        visit: impl FnMut(Range<usize>, f64) -> f64,
     ) {
         if self.nodes.is_empty() {
             return;
         }
+        if self.depth + 2 <= INLINE_STACK {
+            self.walk(
+                &mut [0; INLINE_STACK],
+                ray,
+                inv_dir,
+                (tmin, tmax),
+                kind,
+                visit,
+            );
+        } else {
+            self.walk(
+                &mut vec![0; self.depth + 2],
+                ray,
+                inv_dir,
+                (tmin, tmax),
+                kind,
+                visit,
+            );
+        }
+    }
+
+    /// [`Tree::traverse`] with a stack of at least the depth plus two entries.
+    #[inline]
+    fn walk(
+        &self,
+        stack: &mut [u32],
+        ray: &Ray,
+        inv_dir: DVec3,
+        (tmin, mut tmax): (f64, f64),
+        kind: u8,
+        mut visit: impl FnMut(Range<usize>, f64) -> f64,
+    ) {
         let negative = [
             ray.direction.x < 0.0,
             ray.direction.y < 0.0,
             ray.direction.z < 0.0,
         ];
-        let mut stack = [0u32; STACK_SIZE];
+        stack[0] = 0;
         let mut top = 1;
         while top > 0 {
             top -= 1;
@@ -167,7 +206,9 @@ fn build_node(
     depth: usize,
     max_leaf: usize,
     nodes: &mut Vec<Node>,
+    deepest: &mut usize,
 ) {
+    *deepest = (*deepest).max(depth);
     let (mut bounds, mut centres) = (Aabb::EMPTY, Aabb::EMPTY);
     for item in items.iter() {
         bounds = bounds.union(&item.bounds);
@@ -197,9 +238,9 @@ fn build_node(
         kinds: u8::MAX,
     });
     let (near, far) = items.split_at_mut(left);
-    build_node(near, offset, depth + 1, max_leaf, nodes);
+    build_node(near, offset, depth + 1, max_leaf, nodes, deepest);
     nodes[here].index = nodes.len() as u32;
-    build_node(far, offset + left, depth + 1, max_leaf, nodes);
+    build_node(far, offset + left, depth + 1, max_leaf, nodes, deepest);
 }
 
 /// Chooses how to divide `items` (within `bounds`, their centres within `centres`),
@@ -408,6 +449,28 @@ mod tests {
             assert!(!expected.is_empty());
             assert_eq!(expected, found);
         }
+    }
+
+    /// Boxes at distances growing a hundredfold make every split peel the farthest off
+    /// (all the others share the nearest bin): a tree deeper than the stack a traversal
+    /// keeps in its frame, which then takes one from the heap.
+    #[test]
+    fn deep_trees_are_traversed_whole() {
+        let boxes: Vec<Aabb> = (0..60)
+            .map(|k| {
+                let x = 100f64.powi(k);
+                Aabb::new(
+                    DVec3::new(0.75 * x, -0.5, -0.5),
+                    DVec3::new(1.25 * x, 0.5, 0.5),
+                )
+            })
+            .collect();
+        let (tree, order) = Tree::build(&boxes, 1);
+        assert!(tree.depth + 2 > INLINE_STACK, "{}", tree.depth);
+        let ray = Ray::new(DVec3::new(-5.0, 0.1, 0.0), DVec3::X);
+        let (expected, found) = crossed(&tree, &order, &boxes, &ray);
+        assert_eq!(expected.len(), boxes.len());
+        assert_eq!(expected, found);
     }
 
     #[test]
