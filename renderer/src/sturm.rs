@@ -2,25 +2,41 @@
 //! changes along the Sturm sequence (p, p', and the negated remainders of Euclid's
 //! algorithm) drops by one at each distinct root, so bisection on that count isolates
 //! every root, double roots included, which a change of sign alone would miss. Each
-//! isolated root is then refined by bisection kept safe by the count, sped up by Newton
-//! steps. Coefficients are given lowest degree first, up to degree 15.
+//! isolated root is then refined by Newton steps kept safe by bisection of its bracket
+//! (or, for a root of even multiplicity, by bisection on the count). Coefficients are
+//! given lowest degree first, up to degree 15.
 
 use crate::polynomial::MAX_DEGREE;
 
-/// A polynomial on the stack, lowest degree first.
+/// A polynomial on the stack, lowest degree first, with room for `N` coefficients. The
+/// work is sized by the degree searched: a sequence holds `N` polynomials, and a cubic's
+/// would otherwise zero and copy a sextic's or a 15th degree's worth of them.
 #[derive(Debug, Clone, Copy)]
-struct Poly {
-    c: [f64; MAX_DEGREE + 1],
+struct Poly<const N: usize> {
+    c: [f64; N],
     /// Degree + 1; 0 for the zero polynomial.
     len: usize,
 }
 
-impl Poly {
+impl<const N: usize> Poly<N> {
+    const ZERO: Poly<N> = Poly {
+        c: [0.0; N],
+        len: 0,
+    };
+
     fn eval(&self, x: f64) -> f64 {
         self.c[..self.len]
             .iter()
             .rev()
             .fold(0.0, |acc, c| acc * x + c)
+    }
+
+    /// The value and the slope at `x`, by one Horner pass.
+    fn eval_with_slope(&self, x: f64) -> (f64, f64) {
+        self.c[..self.len]
+            .iter()
+            .rev()
+            .fold((0.0, 0.0), |(v, s), c| (v * x + c, s * x + v))
     }
 
     fn lead(&self) -> f64 {
@@ -54,20 +70,17 @@ impl Poly {
     }
 }
 
-/// The Sturm sequence of a polynomial.
-struct Sequence {
-    polys: [Poly; MAX_DEGREE + 1],
+/// The Sturm sequence of a polynomial: at most as many polynomials as coefficients.
+struct Sequence<const N: usize> {
+    polys: [Poly<N>; N],
     len: usize,
 }
 
-impl Sequence {
-    fn new(p: &Poly) -> Sequence {
-        let zero = Poly {
-            c: [0.0; MAX_DEGREE + 1],
-            len: 0,
-        };
+impl<const N: usize> Sequence<N> {
+    fn new(p: &Poly<N>) -> Sequence<N> {
+        let zero = Poly::ZERO;
         let mut seq = Sequence {
-            polys: [zero; MAX_DEGREE + 1],
+            polys: [zero; N],
             len: 0,
         };
         let mut first = *p;
@@ -81,7 +94,7 @@ impl Sequence {
         d.normalise();
         seq.polys[1] = d;
         seq.len = 2;
-        while seq.len < MAX_DEGREE + 1 && seq.polys[seq.len - 1].len > 1 {
+        while seq.len < N && seq.polys[seq.len - 1].len > 1 {
             // The dividends are normalised to a largest coefficient of 1, so what is left
             // below 1e-12 is rounding: the remainder is zero.
             let mut r = remainder(&seq.polys[seq.len - 2], &seq.polys[seq.len - 1]);
@@ -138,10 +151,10 @@ impl Sequence {
 }
 
 /// The quotient of a divided by b, the remainder dropped.
-fn quotient(a: &Poly, b: &Poly) -> Poly {
+fn quotient<const N: usize>(a: &Poly<N>, b: &Poly<N>) -> Poly<N> {
     let mut r = *a;
     let mut q = Poly {
-        c: [0.0; MAX_DEGREE + 1],
+        c: [0.0; N],
         len: a.len + 1 - b.len,
     };
     let lead = b.lead();
@@ -159,7 +172,7 @@ fn quotient(a: &Poly, b: &Poly) -> Poly {
 }
 
 /// The remainder of a divided by b.
-fn remainder(a: &Poly, b: &Poly) -> Poly {
+fn remainder<const N: usize>(a: &Poly<N>, b: &Poly<N>) -> Poly<N> {
     let mut r = *a;
     if b.len == 0 {
         return r;
@@ -188,10 +201,22 @@ pub fn roots_in(coeffs: &[f64], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -
     {
         return 0;
     }
-    let mut p = Poly {
-        c: [0.0; MAX_DEGREE + 1],
-        len: coeffs.len(),
-    };
+    match coeffs.len() {
+        0..=4 => roots_with::<4>(coeffs, lo, hi, out),
+        5..=7 => roots_with::<7>(coeffs, lo, hi, out),
+        _ => roots_with::<{ MAX_DEGREE + 1 }>(coeffs, lo, hi, out),
+    }
+}
+
+/// [`roots_in`] with room for `N >= coeffs.len()` coefficients.
+fn roots_with<const N: usize>(
+    coeffs: &[f64],
+    lo: f64,
+    hi: f64,
+    out: &mut [f64; MAX_DEGREE],
+) -> usize {
+    let mut p = Poly::<N>::ZERO;
+    p.len = coeffs.len();
     p.c[..coeffs.len()].copy_from_slice(coeffs);
     p.trim(1e-14);
     if p.len < 2 {
@@ -245,8 +270,8 @@ pub fn roots_in(coeffs: &[f64], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -
 
 /// Splits `(a, b]` until each part holds one root, and refines those.
 #[allow(clippy::too_many_arguments)]
-fn isolate(
-    p: &Poly,
+fn isolate<const N: usize>(
+    p: &Poly<N>,
     count_at: &dyn Fn(f64) -> u32,
     a: f64,
     va: u32,
@@ -262,7 +287,7 @@ fn isolate(
     }
     let width = b - a;
     if roots == 1 || depth > 60 || width <= 1e-14 * (a.abs() + b.abs()) {
-        out[*n] = refine(p, count_at, a, va, b);
+        out[*n] = refine(p, count_at, (a, b), va);
         *n += 1;
         return;
     }
@@ -272,37 +297,67 @@ fn isolate(
     isolate(p, count_at, m, vm, b, vb, depth + 1, out, n);
 }
 
-/// The single root in `(a, b]`: bisection on the sign when the ends differ in sign,
-/// otherwise (an even root) on the Sturm count.
-fn refine(p: &Poly, count_at: &dyn Fn(f64) -> u32, a: f64, va: u32, b: f64) -> f64 {
+/// The single root in `(a, b]`: Newton's method kept inside the bracket by bisection
+/// when the ends differ in sign, otherwise (an even root) bisection on the Sturm count.
+fn refine<const N: usize>(
+    p: &Poly<N>,
+    count_at: &dyn Fn(f64) -> u32,
+    (a, b): (f64, f64),
+    va: u32,
+) -> f64 {
     let (mut a, mut b) = (a, b);
-    let mut fa = p.eval(a);
+    let fa = p.eval(a);
     let fb = p.eval(b);
-    let sign_change = fa != 0.0 && fb != 0.0 && (fa < 0.0) != (fb < 0.0);
+    if fa != 0.0 && fb != 0.0 && (fa < 0.0) != (fb < 0.0) {
+        return newton_in_bracket(p, a, fa < 0.0, b);
+    }
     for _ in 0..200 {
         let width = b - a;
         if width <= 1e-12 * (a.abs().max(b.abs()) + 1e-300) {
             break;
         }
         let m = a + 0.5 * width;
-        if sign_change {
-            let fm = p.eval(m);
-            if fm == 0.0 {
-                return m;
-            }
-            if (fm < 0.0) == (fa < 0.0) {
-                a = m;
-                fa = fm;
-            } else {
-                b = m;
-            }
-        } else if count_at(m) < va {
+        if count_at(m) < va {
             b = m;
         } else {
             a = m;
         }
     }
     0.5 * (a + b)
+}
+
+/// The root of `p` between `a` and `b`, where it changes sign (negative at `a` when
+/// `negative_at_a`), to a relative precision of about 1e-12. Each step is Newton's unless
+/// it would leave the bracket or shrink it less than a bisection would have two steps
+/// before, so it converges at least as surely as bisection and, near a simple root, in a
+/// handful of steps instead of some forty.
+fn newton_in_bracket<const N: usize>(p: &Poly<N>, a: f64, negative_at_a: bool, b: f64) -> f64 {
+    let (mut a, mut b) = (a, b);
+    let mut x = a + 0.5 * (b - a);
+    let mut step = b - a;
+    let mut previous = step;
+    for _ in 0..200 {
+        let (f, slope) = p.eval_with_slope(x);
+        if f == 0.0 {
+            return x;
+        }
+        if (f < 0.0) == negative_at_a {
+            a = x;
+        } else {
+            b = x;
+        }
+        let newton = x - f / slope;
+        let fast = newton > a && newton < b && (2.0 * f).abs() <= (previous * slope).abs();
+        previous = step;
+        let next = if fast { newton } else { a + 0.5 * (b - a) };
+        step = next - x;
+        x = next;
+        let tolerance = 1e-12 * (x.abs() + 1e-300);
+        if step.abs() <= tolerance || b - a <= tolerance {
+            break;
+        }
+    }
+    x
 }
 
 #[cfg(test)]
@@ -330,6 +385,23 @@ mod tests {
             (r[0] + 2.0).abs() < 1e-10 && (r[1] - 1.0).abs() < 1e-6,
             "{r:?}"
         );
+    }
+
+    /// Refined roots are good to about 1e-12 relative, at the interval's end as well as
+    /// inside it.
+    #[test]
+    fn roots_are_refined_to_full_precision() {
+        let r = roots(&[-2.0, 0.0, 1.0], 0.0, 3.0);
+        assert_eq!(r.len(), 1);
+        assert!((r[0] - 2f64.sqrt()).abs() < 1e-12 * 2f64.sqrt(), "{r:?}");
+        // (x - 1e-3)(x - 5)(x + 7), scaled.
+        let r = roots(&[3.5e-2, -35.002, 1.999, 1.0], -10.0, 10.0);
+        assert_eq!(r.len(), 3, "{r:?}");
+        for (got, want) in r.iter().zip([-7.0, 1e-3, 5.0]) {
+            assert!((got - want).abs() <= 1e-11 * want.abs(), "{r:?}");
+        }
+        let end = roots(&[-1.0, 1.0], 0.0, 1.0);
+        assert!(end.len() == 1 && (end[0] - 1.0).abs() < 1e-12, "{end:?}");
     }
 
     #[test]
