@@ -23,6 +23,9 @@ struct Segment {
     c: [f64; 4],
     h0: f64,
     h1: f64,
+    /// The smallest and the largest P between the ends.
+    low: f64,
+    high: f64,
 }
 
 impl Segment {
@@ -36,16 +39,19 @@ impl Segment {
         (3.0 * self.c[3] * x + 2.0 * self.c[2]) * x + self.c[1]
     }
 
-    /// The largest P between the ends.
-    fn peak(&self) -> f64 {
-        let mut best = self.value(self.h0).max(self.value(self.h1));
+    /// The smallest and the largest P between the ends.
+    fn extremes(&self) -> (f64, f64) {
+        let (a, b) = (self.value(self.h0), self.value(self.h1));
+        let (mut low, mut high) = (a.min(b), a.max(b));
         let mut turning = Vec::new();
         let derivative = [self.c[1], 2.0 * self.c[2], 3.0 * self.c[3]];
         crate::polynomial::roots_in(&derivative, 0.0, self.h1 - self.h0, &mut turning);
         for x in turning {
-            best = best.max(self.value(self.h0 + x));
+            let v = self.value(self.h0 + x);
+            low = low.min(v);
+            high = high.max(v);
         }
-        best
+        (low, high)
     }
 }
 
@@ -65,7 +71,7 @@ impl Sor {
         let h = |i: usize| points[i].y;
         // The slope of r² at a point: 2 r dr/dh, with dr/dh from its two neighbours.
         let slope = |i: usize| 2.0 * r(i) * (r(i + 1) - r(i - 1)) / (h(i + 1) - h(i - 1));
-        let segments: Vec<Segment> = (1..points.len().saturating_sub(2))
+        let mut segments: Vec<Segment> = (1..points.len().saturating_sub(2))
             .map(|j| {
                 let (v0, v1) = (r(j) * r(j), r(j + 1) * r(j + 1));
                 let (m0, m1) = (slope(j), slope(j + 1));
@@ -80,17 +86,18 @@ impl Sor {
                     ],
                     h0: h(j),
                     h1: h(j + 1),
+                    low: 0.0,
+                    high: 0.0,
                 }
             })
             .collect();
         if segments.is_empty() {
             return None;
         }
-        let radius = segments
-            .iter()
-            .map(Segment::peak)
-            .fold(0.0, f64::max)
-            .sqrt();
+        for segment in &mut segments {
+            (segment.low, segment.high) = segment.extremes();
+        }
+        let radius = segments.iter().map(|s| s.high).fold(0.0, f64::max).sqrt();
         Some(Sor {
             segments,
             radius,
@@ -137,10 +144,27 @@ impl Sor {
             }
             let tc = 0.5 * (t0 + t1);
             let pc = o + d * tc;
-            let x = pc.y - segment.h0;
-            let c = &segment.c;
             let q = DVec2::new(pc.x, pc.z);
             let dq = DVec2::new(d.x, d.z);
+            let slack = 1e-9 * (t1 - t0);
+            let (s0, s1) = (t0 - tc - slack, t1 - tc + slack);
+            // The ray's squared distance from the axis is a convex quadratic along it: no
+            // crossing where it stays beyond the segment's largest P or within its
+            // smallest, which rules out most segments of most rays at the cost of the
+            // cubic's coefficients.
+            let distance2 = |s: f64| (q + dq * s).length_squared();
+            let closest = if e > 0.0 {
+                distance2((-q.dot(dq) / e).clamp(s0, s1))
+            } else {
+                q.length_squared()
+            };
+            let farthest = distance2(s0).max(distance2(s1));
+            let margin = 1e-8 * (segment.high.abs() + segment.low.abs() + closest);
+            if closest > segment.high + margin || farthest < segment.low - margin {
+                continue;
+            }
+            let x = pc.y - segment.h0;
+            let c = &segment.c;
             // P(x + τ dy) - |q + τ dq|², by Taylor's expansion of P about x.
             let p0 = ((c[3] * x + c[2]) * x + c[1]) * x + c[0];
             let p1 = (3.0 * c[3] * x + 2.0 * c[2]) * x + c[1];
@@ -152,14 +176,7 @@ impl Sor {
                 c[3] * d.y * d.y * d.y,
             ];
             found.clear();
-            let slack = 1e-9 * (t1 - t0);
-            plane_curve::solve(
-                &cubic,
-                t0 - tc - slack,
-                t1 - tc + slack,
-                self.sturm,
-                &mut found,
-            );
+            plane_curve::solve(&cubic, s0, s1, self.sturm, &mut found);
             for &tau in &found {
                 // Each height belongs to one segment (the last keeps its top), so that a
                 // crossing at a joint is counted once.
