@@ -155,6 +155,10 @@ impl Prism {
         }
     }
 
+    /// For a linear sweep, the ray's shadow on the x-z plane is followed across the whole
+    /// outline box, not only where the ray is between the heights: its crossings with the
+    /// outline are the walls' candidates, and their parity beyond a cap's point says
+    /// whether the outline encloses that point, without an even-odd search of its own.
     pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
         let d = ray.direction;
         let Some((t_in, t_out)) = self.bounds().line_span(ray) else {
@@ -170,22 +174,38 @@ impl Prism {
         };
         let (o2, d2) = (DVec2::new(o.x, o.z), DVec2::new(d.x, d.z));
         let e = d2.length_squared();
-        // The shadow is widened by a hair: a straight wall on the box's face (a flat side of
-        // the outline) must not be culled when rounding puts the ray's entry just inside.
         let (lo, hi) = self.outline;
+        // Straight up or down, the walls are edge-on and the shadow is a point.
+        let follows_shadow = self.sweep == PrismSweep::Linear && e > 0.0;
+        // The stretch of the shadow searched, as t - t_in.
+        let (u_lo, u_hi) = if follows_shadow {
+            let column = Aabb::new(
+                DVec3::new(lo.x, f64::NEG_INFINITY, lo.y),
+                DVec3::new(hi.x, f64::INFINITY, hi.y),
+            );
+            let Some((s_in, s_out)) = column.line_span(ray) else {
+                return;
+            };
+            (s_in - t_in, s_out - t_in)
+        } else {
+            (0.0, t_out - t_in)
+        };
+        // The shadow is widened by a hair: a straight wall on the box's face (a flat side of
+        // the outline) must not be culled when rounding puts the ray's entry just inside,
+        // all the more as a cap's parity needs every wall crossing.
         let hair = DVec2::splat(1e-9 * (hi - lo).max_element());
-        let shadow = (
-            o2.min(o2 + d2 * (t_out - t_in)) - hair,
-            o2.max(o2 + d2 * (t_out - t_in)) + hair,
-        );
+        let (a, b) = (o2 + d2 * u_lo, o2 + d2 * u_hi);
+        let shadow = (a.min(b) - hair, a.max(b) + hair);
+        // Where along the shadow (as t - t_in) it crosses the outline, each segment's end
+        // left to the next segment's start.
+        let mut shadow_crossings = Vec::new();
         let n = o.cross(d);
         for (index, segment) in self.segments.iter().enumerate() {
             let equation = match self.sweep {
                 PrismSweep::Linear => {
                     let (lo, hi) = self.boxes[index];
-                    // Straight up or down the walls are edge-on; elsewhere the segment's box
-                    // must meet the ray's shadow on the x-z plane.
-                    if e == 0.0 || lo.cmpgt(shadow.1).any() || hi.cmplt(shadow.0).any() {
+                    // The segment's box must meet the ray's shadow on the x-z plane.
+                    if !follows_shadow || lo.cmpgt(shadow.1).any() || hi.cmplt(shadow.0).any() {
                         continue;
                     }
                     combine(segment, d2.y, -d2.x, o2.y * d2.x - o2.x * d2.y)
@@ -203,7 +223,13 @@ impl Prism {
             for &s in &params {
                 let c = segment.at(s);
                 let t = match self.sweep {
-                    PrismSweep::Linear => (c - o2).dot(d2) / e + t_in,
+                    PrismSweep::Linear => {
+                        let u = (c - o2).dot(d2) / e;
+                        if s < 1.0 {
+                            shadow_crossings.push(u);
+                        }
+                        u + t_in
+                    }
                     PrismSweep::Conic => {
                         let v = DVec3::new(c.x, 1.0, c.y);
                         let dv = d.cross(v);
@@ -222,11 +248,16 @@ impl Prism {
         let mut scratch = Vec::new();
         for (y, part) in [(self.y0, BASE), (self.y1, CAP)] {
             let t = (y - ray.origin.y) / d.y;
-            let mut p = ray.at(t);
-            p.y = y;
-            if let Some(q) = self.outline_point(p)
-                && plane_curve::encloses(&self.segments, q, &mut scratch)
-            {
+            let enclosed = if follows_shadow {
+                let u = t - t_in;
+                shadow_crossings.iter().filter(|&&c| c > u).count() % 2 == 1
+            } else {
+                let mut p = ray.at(t);
+                p.y = y;
+                self.outline_point(p)
+                    .is_some_and(|q| plane_curve::encloses(&self.segments, q, &mut scratch))
+            };
+            if enclosed {
                 roots.push(t, part);
             }
         }
@@ -403,6 +434,73 @@ mod tests {
             let hits = crossings(&prism, &ray);
             assert_eq!(hits.len(), 2, "x = {x}: {hits:?}");
             assert_eq!(hits[0].1, 0, "x = {x}: {hits:?}");
+        }
+    }
+
+    /// A linear prism decides its caps by the parity of its walls along the ray's shadow:
+    /// for rays from every side, a cap is crossed exactly where the outline encloses the
+    /// point, as the even-odd test from that point says. The outlines are the manual's
+    /// frame, whose outer sides lie on its box's faces, and a cubic blob with a hole.
+    #[test]
+    fn caps_follow_the_even_odd_rule() {
+        let frame = pts(&[
+            (0.0, 0.0),
+            (6.0, 0.0),
+            (6.0, 8.0),
+            (0.0, 8.0),
+            (0.0, 0.0),
+            (1.0, 1.0),
+            (5.0, 1.0),
+            (5.0, 7.0),
+            (1.0, 7.0),
+            (1.0, 1.0),
+        ]);
+        let blob = pts(&[
+            (-1.0, 1.0),
+            (0.0, 0.0),
+            (4.0, 0.5),
+            (4.5, 4.0),
+            (0.5, 4.5),
+            (0.0, 0.0),
+            (4.0, 0.5),
+            (1.0, 2.0),
+            (1.5, 1.5),
+            (3.0, 1.8),
+            (2.8, 3.0),
+            (1.5, 3.2),
+            (1.5, 1.5),
+            (3.0, 1.8),
+        ]);
+        let mut scratch = Vec::new();
+        for (kind, points) in [(SplineKind::Linear, frame), (SplineKind::Cubic, blob)] {
+            let prism =
+                Prism::new(kind, PrismSweep::Linear, (0.0, 1.0), &points, false, false).unwrap();
+            let mut caps = 0;
+            for k in 0..400 {
+                let a = k as f64 * 0.731;
+                let origin = DVec3::new(
+                    3.0 + 9.0 * a.cos(),
+                    4.0 * (1.3 * a).sin(),
+                    4.0 + 9.0 * a.sin(),
+                );
+                let target = DVec3::new(
+                    3.0 + 3.5 * (2.1 * a).sin(),
+                    0.5,
+                    4.0 + 4.5 * (1.7 * a).cos(),
+                );
+                let ray = Ray::new(origin, target - origin);
+                let hits = crossings(&prism, &ray);
+                for (y, part) in [(0.0, BASE), (1.0, CAP)] {
+                    let t = (y - origin.y) / ray.direction.y;
+                    let p = ray.at(t);
+                    let expected =
+                        plane_curve::encloses(&prism.segments, DVec2::new(p.x, p.z), &mut scratch);
+                    let found = hits.iter().any(|h| h.1 == part);
+                    assert_eq!(found, expected, "{kind:?} ray {k} at y = {y}");
+                    caps += usize::from(found);
+                }
+            }
+            assert!(caps > 50, "{kind:?}: {caps}");
         }
     }
 
