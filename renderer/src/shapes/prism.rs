@@ -324,10 +324,9 @@ mod tests {
         v
     }
 
-    #[test]
-    fn the_manual_frame_has_a_hole() {
-        // Two nested rectangles: the frame of the manual's example.
-        let p = pts(&[
+    /// Two nested rectangles: the frame of the manual's example.
+    fn manual_frame() -> Vec<DVec2> {
+        pts(&[
             (0.0, 0.0),
             (6.0, 0.0),
             (6.0, 8.0),
@@ -338,7 +337,12 @@ mod tests {
             (5.0, 7.0),
             (1.0, 7.0),
             (1.0, 1.0),
-        ]);
+        ])
+    }
+
+    #[test]
+    fn the_manual_frame_has_a_hole() {
+        let p = manual_frame();
         let prism = Prism::new(
             SplineKind::Linear,
             PrismSweep::Linear,
@@ -443,18 +447,7 @@ mod tests {
     /// frame, whose outer sides lie on its box's faces, and a cubic blob with a hole.
     #[test]
     fn caps_follow_the_even_odd_rule() {
-        let frame = pts(&[
-            (0.0, 0.0),
-            (6.0, 0.0),
-            (6.0, 8.0),
-            (0.0, 8.0),
-            (0.0, 0.0),
-            (1.0, 1.0),
-            (5.0, 1.0),
-            (5.0, 7.0),
-            (1.0, 7.0),
-            (1.0, 1.0),
-        ]);
+        let frame = manual_frame();
         let blob = pts(&[
             (-1.0, 1.0),
             (0.0, 0.0),
