@@ -55,7 +55,10 @@ user_warnings() {
 run_one() {
     local pov=$1
     local dir name work status
-    dir=$(cd "$(dirname "$pov")" && pwd)
+    # run_one runs in a fresh shell (xargs), without this script's `set -e`: a directory
+    # that cannot be entered must stop it here, or the copy below would copy from `/`.
+    dir=$(cd "$(dirname "$pov")" && pwd) || return 1
+    [ -n "$dir" ] && [ -f "$pov" ] || { echo "no such program: $pov" >&2; return 1; }
     name=$(basename "$pov" .pov)
     work=$(mktemp -d /tmp/conformance.XXXXXX)
     # A private copy of the group, so that #write lands in the copy and runs do not collide.
@@ -87,8 +90,17 @@ run_one() {
 
 if [ "$#" -gt 0 ]; then
     programs=()
+    # A program is named from the current directory or from this script's.
     for arg in "$@"; do
-        case "$arg" in *.pov) programs+=("$arg") ;; esac
+        case "$arg" in *.pov) ;; *) continue ;; esac
+        if [ -f "$arg" ]; then
+            programs+=("$(cd "$(dirname "$arg")" && pwd)/$(basename "$arg")")
+        elif [ -f "$here/$arg" ]; then
+            programs+=("$here/$arg")
+        else
+            echo "no such program: $arg" >&2
+            exit 2
+        fi
     done
 else
     mapfile -t programs < <(find "$here" -mindepth 2 -name '*.pov' | sort)
