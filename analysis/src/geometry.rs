@@ -1,13 +1,16 @@
 //! The geometric questions a scene may ask while it is evaluated: `trace()`, `inside()`,
-//! `min_extent()` and `max_extent()`. Answering them needs the renderer's shapes, so the
-//! renderer implements [`Geometry`] and front ends hand it to the evaluator; without one,
-//! those calls are located errors rather than made-up answers.
+//! `min_extent()`, `max_extent()` and the `object` pattern's inside test. Answering them
+//! needs the renderer's shapes, so the renderer implements [`Geometry`] and front ends hand
+//! it to the evaluator; without one, those calls are located errors rather than made-up
+//! answers.
 
 use crate::scene::Object;
 use glam::DVec3;
+use std::fmt;
+use std::sync::Arc;
 
 /// Answers geometric queries about evaluated objects.
-pub trait Geometry {
+pub trait Geometry: Send + Sync {
     /// The nearest intersection of the ray from `origin` along `direction` with `object`,
     /// and the surface normal there; `None` when the ray misses.
     fn trace(
@@ -16,8 +19,9 @@ pub trait Geometry {
         origin: DVec3,
         direction: DVec3,
     ) -> Result<Option<(DVec3, DVec3)>, String>;
-    /// Whether `point` lies inside `object`.
-    fn inside(&self, object: &Object, point: DVec3) -> Result<bool, String>;
+    /// A test of whether a point lies inside `object`, prepared once: `inside()` asks it
+    /// one question, the `object` pattern one at every point it colours.
+    fn inside_test(&self, object: &Object) -> Result<InsideTest, String>;
     /// The corners of `object`'s bounding box.
     fn extent(&self, object: &Object) -> Result<(DVec3, DVec3), String>;
 }
@@ -31,7 +35,7 @@ impl Geometry for NoGeometry {
         Err(REFUSAL.into())
     }
 
-    fn inside(&self, _: &Object, _: DVec3) -> Result<bool, String> {
+    fn inside_test(&self, _: &Object) -> Result<InsideTest, String> {
         Err(REFUSAL.into())
     }
 
@@ -40,4 +44,33 @@ impl Geometry for NoGeometry {
     }
 }
 
-const REFUSAL: &str = "this front end cannot answer geometric queries (trace, inside, extents)";
+const REFUSAL: &str =
+    "this front end cannot answer geometric queries (trace, inside, extents, object pattern)";
+
+/// Whether a point lies inside one object, as the renderer's shapes decide it.
+#[derive(Clone)]
+pub struct InsideTest(Arc<dyn Fn(DVec3) -> bool + Send + Sync>);
+
+impl InsideTest {
+    pub fn new(test: impl Fn(DVec3) -> bool + Send + Sync + 'static) -> InsideTest {
+        InsideTest(Arc::new(test))
+    }
+
+    pub fn contains(&self, point: DVec3) -> bool {
+        (self.0)(point)
+    }
+}
+
+/// Two tests are equal when they are the same prepared test: a scene compares equal to
+/// its clones, and a re-evaluated scene (with a newly prepared test) does not.
+impl PartialEq for InsideTest {
+    fn eq(&self, other: &InsideTest) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+impl fmt::Debug for InsideTest {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("InsideTest")
+    }
+}

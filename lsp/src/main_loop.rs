@@ -105,7 +105,7 @@ struct MainLoop {
 
 impl MainLoop {
     fn new(publisher: Publisher, jobs: MainLoopHandle) -> MainLoop {
-        let mut db = RootDatabase::default();
+        let mut db = RootDatabase::default().with_geometry(Arc::new(renderer::SceneGeometry));
         let project = Project::new(&db, Vec::new(), BTreeMap::new(), EvalOptions::default(), 0);
         let mut files = BTreeMap::new();
         for name in analysis::stdinc::names() {

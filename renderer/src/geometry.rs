@@ -1,11 +1,12 @@
 //! Answers the evaluator's geometric queries (`trace()`, `inside()`, `min_extent()`,
-//! `max_extent()`) with the renderer's own shapes, so parse-time answers agree with the
-//! picture.
+//! `max_extent()`, the `object` pattern) with the renderer's own shapes, so parse-time
+//! answers agree with the picture.
 
 use crate::build::{BuildSettings, build_world};
 use crate::object::Query;
 use crate::ray::{Ray, RayKind};
 use crate::tracer::World;
+use analysis::InsideTest;
 use analysis::scene::{Object, Scene};
 use glam::DVec3;
 
@@ -59,8 +60,9 @@ impl analysis::Geometry for SceneGeometry {
         }))
     }
 
-    fn inside(&self, object: &Object, point: DVec3) -> Result<bool, String> {
-        Ok(world_of(object)?.bvh.contains(point))
+    fn inside_test(&self, object: &Object) -> Result<InsideTest, String> {
+        let world = world_of(object)?;
+        Ok(InsideTest::new(move |point| world.bvh.contains(point)))
     }
 
     fn extent(&self, object: &Object) -> Result<(DVec3, DVec3), String> {

@@ -207,6 +207,25 @@ fn check_reports_every_file_and_its_debug_output() {
     .assert_eq(&stderr(&output));
 }
 
+/// `check` answers `trace()`, `inside()`, the extents and the `object` pattern with the
+/// renderer's shapes, as a render does, instead of refusing scenes that ask them.
+#[test]
+fn check_answers_geometric_queries_as_a_render_does() {
+    let dir = scene_dir(&[(
+        "scene.pov",
+        "#version 3.7;\n\
+         #declare S = sphere { 0, 1 }\n\
+         #declare P = trace(S, <0, 0, -5>, z);\n\
+         #declare F = function { pattern { object { S } } }\n\
+         #debug concat(vstr(3, P, \",\", 0, 1), \" \", str(inside(S, 0), 0, 0), \
+         str(F(0, 0, 0), 0, 0), \" \", vstr(3, max_extent(S), \",\", 0, 0), \"\\n\")\n\
+         object { S pigment { object { S rgb 0, rgb 1 } } }\n",
+    )]);
+    let output = povrayst(dir.path(), &["check", "scene.pov"]);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    assert_eq!(stderr(&output), "0.0,0.0,-1.0 11 1,1,1\n");
+}
+
 #[test]
 fn latin1_scenes_and_includes_are_read_as_povray_reads_them() {
     let dir = scene_dir(&[]);

@@ -12,6 +12,16 @@ fn scene_dir(files: &[(&str, &str)]) -> tempfile::TempDir {
     dir
 }
 
+/// A server started in an empty directory, with `scene.pov` open at version 1 holding
+/// `text`.
+fn server_with_scene(text: &str) -> (tempfile::TempDir, LspProcess, String) {
+    let dir = scene_dir(&[]);
+    let (mut server, _) = LspProcess::start(dir.path(), Value::Null);
+    let scene = uri(dir.path()) + "/scene.pov";
+    server.open(&scene, "povray", 1, text);
+    (dir, server, scene)
+}
+
 /// Each error and warning as `line:column severity message`, one-based as `povrayst check`
 /// says.
 fn summary(diagnostics: &[Value]) -> Vec<String> {
@@ -81,6 +91,22 @@ fn diagnostics_follow_opens_and_edits_in_order() {
         json!({"textDocument": {"uri": scene}}),
     );
     assert_eq!(server.diagnostics(&scene, None), Vec::<Value>::new());
+    assert_eq!(server.stop(), Some(0));
+}
+
+/// The server checks scenes with the renderer's shapes answering `trace()`, `inside()`
+/// and the `object` pattern, as `povrayst check` and a render do.
+#[test]
+fn scenes_asking_geometric_questions_check_clean() {
+    let (_dir, mut server, scene) = server_with_scene(
+        "#version 3.7;\n#declare S = sphere { 0, 1 }\n#declare P = trace(S, -5*z, z);\n\
+         #declare I = inside(S, 0);\n\
+         object { S pigment { object { S rgb P.z, rgb I } } }\n",
+    );
+    assert_eq!(
+        summary(&server.diagnostics(&scene, Some(1))),
+        Vec::<String>::new()
+    );
     assert_eq!(server.stop(), Some(0));
 }
 
@@ -377,13 +403,7 @@ fn editing_aids_answer_over_the_protocol() {
 
 #[test]
 fn render_previews_a_scene_as_a_png() {
-    let dir = scene_dir(&[]);
-    let (mut server, _) = LspProcess::start(dir.path(), Value::Null);
-    let scene = uri(dir.path()) + "/scene.pov";
-    server.open(
-        &scene,
-        "povray",
-        1,
+    let (_dir, mut server, scene) = server_with_scene(
         "#version 3.7;\ncamera { location <0, 0, -4> look_at 0 }\nlight_source { <3, 4, -5> rgb 1 }\nsphere { 0, 1 pigment { rgb <1, 0.5, 0.2> } }\n",
     );
     let mut params = whole(&scene);

@@ -1,4 +1,4 @@
-//! A file's diagnostics: the file checked as a scene by [`crate::check`], exactly as
+//! A file's diagnostics: the file checked as a scene by [`crate::check_with`], exactly as
 //! `povrayst check` and the Typst plugin check it, so that every front end reports the
 //! same words at the same place.
 
@@ -38,7 +38,12 @@ impl Checked {
 #[salsa::tracked(returns(ref))]
 pub fn check_file(db: &dyn Db, file: File) -> Checked {
     let files = ProjectFiles::new(db, file);
-    let evaluation = crate::check(files.main_name(), &files, file.project(db).options(db));
+    let evaluation = crate::check_with(
+        files.main_name(),
+        &files,
+        file.project(db).options(db),
+        db.geometry(),
+    );
     let main_name = files.main_name().to_owned();
     let unloaded = files.into_unloaded();
     let names = evaluation

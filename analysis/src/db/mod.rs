@@ -31,9 +31,16 @@ pub use symbols::{
 };
 pub use tree::{line_index, parse};
 
+use crate::geometry::{Geometry, NoGeometry};
+use std::sync::Arc;
+
 /// The queries' view of the database.
 #[salsa::db]
-pub trait Db: salsa::Database {}
+pub trait Db: salsa::Database {
+    /// What answers the scenes' geometric queries (`trace()`, `inside()`, the extents, the
+    /// `object` pattern) while they are checked: the renderer, for the language server.
+    fn geometry(&self) -> &dyn Geometry;
+}
 
 /// The one concrete database: the language server holds one and hands clones to the
 /// threads that answer requests.
@@ -41,13 +48,18 @@ pub trait Db: salsa::Database {}
 #[derive(Clone)]
 pub struct RootDatabase {
     storage: salsa::Storage<Self>,
+    geometry: Arc<dyn Geometry>,
 }
 
 #[salsa::db]
 impl salsa::Database for RootDatabase {}
 
 #[salsa::db]
-impl Db for RootDatabase {}
+impl Db for RootDatabase {
+    fn geometry(&self) -> &dyn Geometry {
+        &*self.geometry
+    }
+}
 
 impl Default for RootDatabase {
     fn default() -> Self {
@@ -79,7 +91,16 @@ impl RootDatabase {
             .ingredient::<resolve::resolve_file>()
             .ingredient::<diagnostics::check_file>()
             .build();
-        RootDatabase { storage }
+        RootDatabase {
+            storage,
+            geometry: Arc::new(NoGeometry),
+        }
+    }
+
+    /// The database with `geometry` answering the scenes' geometric queries; without it
+    /// they are located errors.
+    pub fn with_geometry(self, geometry: Arc<dyn Geometry>) -> Self {
+        RootDatabase { geometry, ..self }
     }
 }
 

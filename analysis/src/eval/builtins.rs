@@ -315,8 +315,9 @@ impl Evaluator<'_> {
                 self.expect(R_PAREN, "')'")?;
                 let inside = self
                     .geometry
-                    .inside(&object, point)
-                    .map_err(|m| self.error_at(token, m))?;
+                    .inside_test(&object)
+                    .map_err(|m| self.error_at(token, m))?
+                    .contains(point);
                 float(f64::from(u8::from(inside)))
             }
             MIN_EXTENT_KW | MAX_EXTENT_KW => {

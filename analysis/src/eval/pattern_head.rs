@@ -31,7 +31,11 @@ impl Evaluator<'_> {
                         }
                     }
                 };
-                PatternKind::Object(Box::new(object))
+                let test = self
+                    .geometry
+                    .inside_test(&object)
+                    .map_err(|m| self.error_at(keyword, m))?;
+                PatternKind::Object(test)
             }
             PIGMENT_PATTERN_KW => PatternKind::PigmentPattern(Box::new(self.pigment_body()?)),
             FACETS_KW => PatternKind::Facets {
@@ -70,9 +74,11 @@ impl Evaluator<'_> {
 
 #[cfg(test)]
 mod tests {
-    use crate::eval::{EvalOptions, evaluate};
+    use crate::eval::tests::SpheresOnly;
+    use crate::eval::{EvalOptions, evaluate, evaluate_with};
     use crate::files::MemoryFiles;
     use crate::pattern;
+    use expect_test::expect;
     use glam::DVec3;
 
     #[test]
@@ -82,7 +88,7 @@ mod tests {
                     #debug concat(str(P(0, 0, 0), 0, 0), str(P(2, 0, 0), 0, 0), \"\\n\")\n\
                     plane { y, 0 pigment { object { Ball rgb 1, rgb 0 } scale 2 } }";
         let files = MemoryFiles::new().with("scene.pov", text);
-        let evaluation = evaluate("scene.pov", &files, &EvalOptions::default());
+        let evaluation = evaluate_with("scene.pov", &files, &EvalOptions::default(), &SpheresOnly);
         assert_eq!(evaluation.debug_text(), "10\n");
         let scene = evaluation.scene.expect("the scene evaluates");
         let texture = scene.objects[0].texture.clone().expect("a texture");
@@ -95,5 +101,23 @@ mod tests {
                 .x
         };
         assert_eq!((at(1.5), at(2.5)), (0.0, 1.0));
+    }
+
+    #[test]
+    fn object_patterns_need_a_renderer() {
+        let text = "plane { y, 0 pigment { object { sphere { 0, 1 } rgb 1, rgb 0 } } }";
+        let files = MemoryFiles::new().with("scene.pov", text);
+        let evaluation = evaluate("scene.pov", &files, &EvalOptions::default());
+        let errors: Vec<_> = evaluation
+            .diagnostics
+            .into_iter()
+            .filter(|d| d.is_error())
+            .collect();
+        expect![[r#"
+            scene.pov:1:24: error: this front end cannot answer geometric queries (trace, inside, extents, object pattern)
+                1 | plane { y, 0 pigment { object { sphere { 0, 1 } rgb 1, rgb 0 } } }
+                  |                        ^~~~~~
+        "#]]
+        .assert_eq(&syntax::diagnostic::render_human(&errors, &evaluation.sources));
     }
 }

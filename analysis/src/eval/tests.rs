@@ -215,7 +215,7 @@ fn files_written_can_be_read_back() {
 }
 
 /// A stand-in renderer that knows spheres only, to test the calls that ask it.
-struct SpheresOnly;
+pub(super) struct SpheresOnly;
 
 impl crate::geometry::Geometry for SpheresOnly {
     fn trace(
@@ -239,15 +239,16 @@ impl crate::geometry::Geometry for SpheresOnly {
         Ok(Some((p, (p - center) / radius)))
     }
 
-    fn inside(
+    fn inside_test(
         &self,
         object: &crate::scene::Object,
-        point: glam::DVec3,
-    ) -> std::result::Result<bool, String> {
+    ) -> std::result::Result<crate::InsideTest, String> {
         let Shape::Sphere { center, radius } = object.shape else {
             return Err("spheres only".into());
         };
-        Ok((point - center).length() < radius)
+        Ok(crate::InsideTest::new(move |point| {
+            (point - center).length() < radius
+        }))
     }
 
     fn extent(
@@ -280,7 +281,7 @@ fn trace_inside_and_extents_ask_the_renderer() {
     .assert_eq(&evaluation.debug_text());
     let refused = eval("#declare P = trace(sphere { 0, 1 }, 5, -x);");
     expect![[r#"
-        scene.pov:1:14: error: this front end cannot answer geometric queries (trace, inside, extents)
+        scene.pov:1:14: error: this front end cannot answer geometric queries (trace, inside, extents, object pattern)
             1 | #declare P = trace(sphere { 0, 1 }, 5, -x);
               |              ^~~~~
     "#]]

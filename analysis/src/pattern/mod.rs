@@ -9,7 +9,6 @@ pub mod bitmap;
 mod blocks;
 pub mod cells;
 mod fractal;
-pub mod inside;
 mod spiral;
 pub mod tiling;
 pub mod warp;
@@ -34,7 +33,6 @@ pub enum PatternValue {
 /// Whether the pattern can be evaluated; `Err` names what is missing.
 pub fn check(pattern: &Pattern) -> Result<(), String> {
     match &pattern.kind {
-        PatternKind::Object(object) => return inside::check(object),
         PatternKind::PigmentPattern(pigment) => return check_pigment(pigment),
         PatternKind::Facets { .. } => {
             return Err("the facets pattern can only be used in a normal".into());
@@ -273,7 +271,7 @@ pub fn evaluate_warped(pattern: &Pattern, p: DVec3) -> PatternValue {
             return PatternValue::Block(blocks::triangular(turbulent(p)));
         }
         PatternKind::Object(object) => {
-            return PatternValue::Block(usize::from(inside::inside(object, turbulent(p))));
+            return PatternValue::Block(usize::from(object.contains(turbulent(p))));
         }
         PatternKind::PigmentPattern(pigment) => pigment_colour(pigment, turbulent(p)).grey_value(),
         PatternKind::Marble => p.x + scalar_turbulence(p),

@@ -1,4 +1,4 @@
-use super::{Colour, Object, Transform};
+use super::{Colour, Transform};
 use crate::function::Function;
 use glam::DVec3;
 use std::sync::Arc;
@@ -124,7 +124,8 @@ pub enum PatternKind {
     Waves,
     Wood,
     Wrinkles,
-    Object(Box<Object>),
+    /// `object { O A, B }`: entry B inside the object, entry A outside.
+    Object(crate::geometry::InsideTest),
     /// `pigment_pattern { PIGMENT }`: the grey value of the pigment's colour.
     PigmentPattern(Box<Pigment>),
     /// `mandel N`, `julia <c>, N`, `magnet 1|2 mandel|julia N`: escape-time fractals, with

@@ -122,7 +122,12 @@ pub fn run(args: &CheckArgs) -> Outcome {
 fn check_scene(scene: &Path, library_paths: &[PathBuf]) -> Report {
     let name = scene.to_str().unwrap_or_default();
     let files = DiskFiles::for_scene(scene, library_paths);
-    let evaluation = analysis::check(name, &files, &EvalOptions::default());
+    let evaluation = analysis::check_with(
+        name,
+        &files,
+        &EvalOptions::default(),
+        &renderer::SceneGeometry,
+    );
     let mut diagnostics = evaluation.diagnostics.clone();
     let clean = !evaluation.has_errors();
     let debug_text = evaluation.debug_text();
