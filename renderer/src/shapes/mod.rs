@@ -193,13 +193,11 @@ impl Shape {
             Shape::Cuboid(s) => return s.first_hit(ray, tmin, tmax),
             Shape::Math(s) => return s.first_hit(ray, tmin, tmax),
             Shape::Mesh(s) => return s.first_hit(ray, tmin, tmax),
+            Shape::Torus(s) => return s.first_hit(ray, tmin, tmax),
             _ => {}
         }
         let mut roots = Roots::new();
-        match self {
-            Shape::Torus(s) => s.intersect_within(ray, tmin, tmax, &mut roots),
-            _ => self.intersect(ray, &mut roots),
-        }
+        self.intersect(ray, &mut roots);
         roots
             .as_slice()
             .iter()

@@ -1,7 +1,7 @@
 //! `torus { major, minor }`: the tube of radius `minor` around the circle of radius `major`
 //! in the x-z plane, centred on the origin.
 
-use super::Roots;
+use super::{Root, Roots};
 use crate::fast_math::{max, min};
 use crate::polynomial;
 use crate::ray::Ray;
@@ -28,6 +28,24 @@ impl Torus {
     /// the tube's bounds whatever the interval, so that a crossing comes out the same for
     /// every query.
     pub fn intersect_within(&self, ray: &Ray, tmin: f64, tmax: f64, roots: &mut Roots) {
+        self.crossings(ray, tmin, tmax, |t| roots.push(t, 0));
+    }
+
+    /// The nearest crossing inside `(tmin, tmax)`, as [`Torus::intersect_within`] would
+    /// list it, without building the list: most rays a torus is asked about never reach
+    /// its quartic.
+    pub fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<Root> {
+        let mut nearest: Option<f64> = None;
+        self.crossings(ray, tmin, tmax, |t| {
+            if t.is_finite() && t > tmin && t < tmax && nearest.is_none_or(|n| t < n) {
+                nearest = Some(t);
+            }
+        });
+        nearest.map(|t| Root { t, part: 0 })
+    }
+
+    /// [`Torus::intersect_within`] giving each crossing to `found`.
+    fn crossings(&self, ray: &Ray, tmin: f64, tmax: f64, mut found: impl FnMut(f64)) {
         let (big, small) = (self.major, self.minor);
         // Work from where the ray enters the bounding sphere, so that the quartic's
         // coefficients stay of the torus's own size.
@@ -77,15 +95,15 @@ impl Torus {
             power *= span;
         }
         if self.sturm {
-            let mut found = [0.0; polynomial::MAX_DEGREE];
-            let n = sturm::roots_in(&coeffs, 0.0, 1.0, &mut found);
-            for &x in &found[..n] {
-                roots.push(t0 + x * span, 0);
+            let mut roots = [0.0; polynomial::MAX_DEGREE];
+            let n = sturm::roots_in(&coeffs, 0.0, 1.0, &mut roots);
+            for &x in &roots[..n] {
+                found(t0 + x * span);
             }
         } else {
-            let (found, n) = polynomial::quartic_roots_in(&coeffs, 0.0, 1.0);
-            for &x in &found[..n] {
-                roots.push(t0 + x * span, 0);
+            let (roots, n) = polynomial::quartic_roots_in(&coeffs, 0.0, 1.0);
+            for &x in &roots[..n] {
+                found(t0 + x * span);
             }
         }
     }
