@@ -589,6 +589,10 @@ impl<'w> Tracer<'w> {
         colour: DVec3,
         photons_stop: Option<&LightPhotons>,
     ) -> DVec3 {
+        // Without a shadow-casting object or media to cross, the light arrives whole.
+        if !self.world.bvh.seen_by(RayKind::Shadow) && self.shadow_start.is_empty() {
+            return colour;
+        }
         let mut colour = colour;
         let mut origin = p;
         let mut remaining = distance;

@@ -6,6 +6,7 @@ pub mod tree;
 
 use crate::bounds::Aabb;
 use crate::object::{Hit, Object, Query};
+use crate::ray::RayKind;
 use tree::Tree;
 
 /// Objects in one leaf of the tree at most: an object's own test costs about what a box
@@ -18,6 +19,9 @@ pub struct Bvh {
     tree: Tree,
     objects: Vec<Object>,
     unbounded: Vec<Object>,
+    /// The kinds of rays that may meet some object (a set of
+    /// [`RayKind::bit`](crate::ray::RayKind::bit)s).
+    kinds: u8,
 }
 
 impl Bvh {
@@ -34,11 +38,22 @@ impl Bvh {
             .filter_map(|&i| slots[i as usize].take())
             .collect();
         tree.restrict_kinds(|i| objects[i].kinds());
+        let kinds = objects
+            .iter()
+            .chain(&unbounded)
+            .fold(0, |set, o| set | o.kinds());
         Bvh {
             tree,
             objects,
             unbounded,
+            kinds,
         }
+    }
+
+    /// Whether rays of `kind` may meet some object: shadow rays meet none in a scene
+    /// whose every object is `no_shadow`.
+    pub fn seen_by(&self, kind: RayKind) -> bool {
+        self.kinds & kind.bit() != 0
     }
 
     /// Whether `p` is inside any object.
