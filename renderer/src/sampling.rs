@@ -278,8 +278,28 @@ impl Subdivider {
     }
 }
 
-/// Whether some two of a square's corners differ by the threshold or more.
+/// Whether some two of a square's corners differ by the threshold or more. No two differ
+/// by more than the corners' spread (the sum of each channel's range), which most squares
+/// keep below the threshold: those need no comparing of pairs. Rounding keeps the bound,
+/// since each pair's distance is the same sum of differences no larger than the ranges.
 fn differ_at_corners(c: [&Compared; 4], threshold: f64) -> bool {
+    let range = |channel: fn(&Sample) -> f64| {
+        let first = channel(&c[0].encoded);
+        let (mut lo, mut hi) = (first, first);
+        for s in &c[1..] {
+            lo = fast_math::min(lo, channel(&s.encoded));
+            hi = fast_math::max(hi, channel(&s.encoded));
+        }
+        hi - lo
+    };
+    // Summed in the order `Sample::distance` sums a pair's differences.
+    let spread = range(|s| s.colour.x)
+        + range(|s| s.colour.y)
+        + range(|s| s.colour.z)
+        + range(|s| s.transmit);
+    if spread < threshold {
+        return false;
+    }
     (0..4).any(|i| (i + 1..4).any(|j| c[i].encoded.distance(c[j].encoded) >= threshold))
 }
 
