@@ -248,27 +248,37 @@ impl Julia {
 
     /// The gradient of |h_n|² at `p`: outward where orbits escape.
     pub fn normal(&self, p: DVec3) -> DVec3 {
-        let h = self.lift(p);
-        // Finite differences of the escape-time potential would be noisy; instead the
-        // Jacobian of the orbit is carried along with it, as POV-Ray does (with w held
-        // fixed, as POV-Ray holds it).
-        let mut q = h;
-        let mut jac = [
-            DVec4::new(1.0, 0.0, 0.0, 0.0),
-            DVec4::new(0.0, 1.0, 0.0, 0.0),
-            DVec4::new(0.0, 0.0, 1.0, 0.0),
-        ];
-        for _ in 0..self.iterations {
-            let (next, derivative) = self.step_with_derivative(q);
-            for j in &mut jac {
-                *j = derivative(*j);
-            }
-            q = next;
+        // The orbit is kept for the backward pass; short ones, the usual, on the stack.
+        let steps = self.iterations as usize;
+        if steps <= SHORT_ORBIT {
+            self.gradient(p, &mut [DVec4::ZERO; SHORT_ORBIT + 1][..=steps])
+        } else {
+            self.gradient(p, &mut vec![DVec4::ZERO; steps + 1])
+        }
+    }
+
+    /// The gradient of |h_n|² at `p`, with room for the orbit in `orbit` (one more point
+    /// than steps). Finite differences of the escape-time potential would be noisy;
+    /// instead the orbit's derivative is taken exactly, as POV-Ray does (with w held
+    /// fixed, as POV-Ray holds it). It is carried backwards, from h_n through each step's
+    /// transposed derivative to the start: one vector per step, where carrying the three
+    /// tangents of x, y and z forwards would take three.
+    fn gradient(&self, p: DVec3, orbit: &mut [DVec4]) -> DVec3 {
+        orbit[0] = self.lift(p);
+        let mut last = 0;
+        while last + 1 < orbit.len() {
+            let q = self.step(orbit[last]);
+            last += 1;
+            orbit[last] = q;
             if !q.is_finite() || q.length_squared() > 1e100 {
                 break;
             }
         }
-        let n = DVec3::new(jac[0].dot(q), jac[1].dot(q), jac[2].dot(q));
+        let mut g = orbit[last];
+        for &q in orbit[..last].iter().rev() {
+            g = self.pullback(q, g);
+        }
+        let n = g.truncate();
         if n.is_finite() && n != DVec3::ZERO {
             n
         } else {
@@ -276,12 +286,10 @@ impl Julia {
         }
     }
 
-    /// One step of the orbit from `q`, and the map of a tangent vector through it.
-    fn step_with_derivative(&self, q: DVec4) -> (DVec4, impl Fn(DVec4) -> DVec4 + use<>) {
+    /// One step of the orbit from `q`.
+    fn step(&self, q: DVec4) -> DVec4 {
         let p = self.parameter;
-        let algebra = self.algebra;
-        let function = self.function;
-        let next = match (algebra, function) {
+        match (self.algebra, self.function) {
             (JuliaAlgebra::Quaternion, JuliaFunction::Cube) => {
                 let d = q.y * q.y + q.z * q.z + q.w * q.w;
                 let x2 = q.x * q.x;
@@ -302,33 +310,47 @@ impl Julia {
                 let (pa, pb) = split(p);
                 merge(apply(f, a).0.add(pa), apply(f, b).0.add(pb))
             }
-        };
-        let derivative = move |v: DVec4| -> DVec4 {
-            match (algebra, function) {
-                (JuliaAlgebra::Quaternion, JuliaFunction::Cube) => {
-                    // d(h³) = h² dh + h dh h + dh h² for quaternions.
-                    let h2 = qmul(q, q);
-                    qmul(h2, v) + qmul(qmul(q, v), q) + qmul(v, h2)
-                }
-                // q v + v q: the cross products of the two orders cancel.
-                (JuliaAlgebra::Quaternion, _) => {
-                    let real = q.x * v.x - (q.y * v.y + q.z * v.z + q.w * v.w);
-                    2.0 * DVec4::new(
-                        real,
-                        q.x * v.y + v.x * q.y,
-                        q.x * v.z + v.x * q.z,
-                        q.x * v.w + v.x * q.w,
-                    )
-                }
-                (JuliaAlgebra::Hypercomplex, f) => {
-                    let (a, b) = split(q);
-                    let (va, vb) = split(v);
-                    merge(apply(f, a).1.mul(va), apply(f, b).1.mul(vb))
-                }
-            }
-        };
-        (next, derivative)
+        }
     }
+
+    /// The transposed derivative of the step at `q`, applied to `g`: the gradient with
+    /// respect to `q` of a quantity whose gradient with respect to the next point is `g`.
+    fn pullback(&self, q: DVec4, g: DVec4) -> DVec4 {
+        match (self.algebra, self.function) {
+            (JuliaAlgebra::Quaternion, JuliaFunction::Cube) => {
+                // d(h³) = h² dh + h dh h + dh h²; the transpose of a product by a
+                // quaternion is the product by its conjugate.
+                let c = qconj(q);
+                let c2 = qmul(c, c);
+                qmul(c2, g) + qmul(qmul(c, g), c) + qmul(g, c2)
+            }
+            // d(h²) = h dh + dh h, whose cross products cancel.
+            (JuliaAlgebra::Quaternion, _) => {
+                let real = q.x * g.x + (q.y * g.y + q.z * g.z + q.w * g.w);
+                2.0 * DVec4::new(
+                    real,
+                    q.x * g.y - g.x * q.y,
+                    q.x * g.z - g.x * q.z,
+                    q.x * g.w - g.x * q.w,
+                )
+            }
+            // The split is a scaled rotation (its transpose is twice the merge), and the
+            // transpose of a product by a complex number is the product by its conjugate.
+            (JuliaAlgebra::Hypercomplex, f) => {
+                let (a, b) = split(q);
+                let (ga, gb) = split(g);
+                merge(apply(f, a).1.conj().mul(ga), apply(f, b).1.conj().mul(gb))
+            }
+        }
+    }
+}
+
+/// The longest orbit whose normal keeps it on the stack.
+const SHORT_ORBIT: usize = 32;
+
+/// The quaternion conjugate.
+fn qconj(a: DVec4) -> DVec4 {
+    DVec4::new(a.x, -a.y, -a.z, -a.w)
 }
 
 /// The quaternion product.
@@ -376,6 +398,10 @@ impl Complex {
             (self.re * o.re + self.im * o.im) / d,
             (self.im * o.re - self.re * o.im) / d,
         )
+    }
+
+    fn conj(self) -> Complex {
+        Complex::new(self.re, -self.im)
     }
 
     fn scale(self, s: f64) -> Complex {
@@ -558,13 +584,62 @@ mod tests {
     }
 
     #[test]
-    fn the_square_map_derivative_is_the_symmetric_product() {
-        let julia = gallery_julia(8);
-        let q = DVec4::new(0.3, -0.7, 0.2, 0.9);
-        let v = DVec4::new(-0.4, 0.1, 0.8, 0.25);
-        let (_, derivative) = julia.step_with_derivative(q);
-        let want = qmul(q, v) + qmul(v, q);
-        assert!((derivative(v) - want).length() < 1e-15, "{want}");
+    fn the_pullback_is_the_transposed_derivative_of_the_step() {
+        // ⟨D v, g⟩ = ⟨v, Dᵀ g⟩, with D v by central differences of the step.
+        let (q, v, g) = (
+            DVec4::new(0.3, -0.7, 0.2, 0.9),
+            DVec4::new(-0.4, 0.1, 0.8, 0.25),
+            DVec4::new(0.6, 0.35, -0.2, -0.5),
+        );
+        let algebras = [
+            (JuliaAlgebra::Quaternion, JuliaFunction::Sqr),
+            (JuliaAlgebra::Quaternion, JuliaFunction::Cube),
+            (JuliaAlgebra::Hypercomplex, JuliaFunction::Sqr),
+            (JuliaAlgebra::Hypercomplex, JuliaFunction::Sin),
+            (JuliaAlgebra::Hypercomplex, JuliaFunction::Pwr(2.0, 0.5)),
+        ];
+        for (algebra, function) in algebras {
+            let julia = Julia::new(
+                DVec4::new(0.4, 0.2, 0.1, 0.0),
+                algebra,
+                function,
+                8,
+                20.0,
+                DVec4::new(0.0, 0.0, 0.0, 1.0),
+                0.0,
+            );
+            let h = 1e-6;
+            let dv = (julia.step(q + v * h) - julia.step(q - v * h)) / (2.0 * h);
+            let (want, got) = (dv.dot(g), v.dot(julia.pullback(q, g)));
+            assert!(
+                (want - got).abs() < 1e-8,
+                "{algebra:?} {function:?}: {want} {got}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_normal_is_the_gradient_of_the_orbit_norm() {
+        // Past the stack's room for the orbit too.
+        for iterations in [3, 40] {
+            let julia = gallery_julia(iterations);
+            let norm = |p: DVec3| {
+                let mut q = julia.lift(p);
+                for _ in 0..iterations {
+                    q = julia.step(q);
+                }
+                0.5 * q.length_squared()
+            };
+            let p = DVec3::new(0.1, -0.2, 0.05);
+            let h = 1e-7;
+            let slope = |axis: DVec3| (norm(p + axis * h) - norm(p - axis * h)) / (2.0 * h);
+            let want = DVec3::new(slope(DVec3::X), slope(DVec3::Y), slope(DVec3::Z));
+            let got = julia.normal(p);
+            assert!(
+                (got - want).length() < 1e-5 * want.length(),
+                "{iterations}: {got} {want}"
+            );
+        }
     }
 
     #[test]
