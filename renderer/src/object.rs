@@ -269,6 +269,10 @@ pub struct Csg {
     pub bounds: Aabb,
     /// Bounds of the inside: infinite once an inverted child makes it so.
     pub region: Aabb,
+    /// A sphere or box among the children of an intersection (one that clips, for a clip)
+    /// holding all of the node's surface: a ray that passes it by misses the node, whose
+    /// other children then need no test (a `cubic` clipped by a sphere inside its box).
+    hull: Option<usize>,
 }
 
 /// The CSG operations a runtime node performs.
@@ -319,12 +323,40 @@ impl Csg {
             },
             CsgKind::Union | CsgKind::Merge => (bounds, region),
         };
+        let first_bound = usize::from(kind == CsgKind::Clip);
+        let hull = match kind {
+            CsgKind::Intersection | CsgKind::Clip => children
+                .iter()
+                .skip(first_bound)
+                .position(|o| {
+                    matches!(o, Object::Leaf(l) if !l.inverse
+                        && matches!(l.shape, Shape::Sphere(_) | Shape::Cuboid(_)))
+                })
+                .map(|i| i + first_bound),
+            CsgKind::Union | CsgKind::Merge => None,
+        };
         Csg {
             kind,
             children,
             bounds,
             region,
+            hull,
         }
+    }
+
+    /// Whether the query's ray may meet the surface: not when it passes by the hull, or
+    /// crosses it only outside the query's interval.
+    fn meets_hull(&self, q: &Query) -> bool {
+        let Some(Object::Leaf(hull)) = self.hull.map(|i| &self.children[i]) else {
+            return true;
+        };
+        let ray = hull.local_ray(&q.ray);
+        let span = match &hull.shape {
+            Shape::Sphere(sphere) => sphere.span(&ray),
+            Shape::Cuboid(c) => c.crossings(&ray).map(|(near, far)| (near.t, far.t)),
+            _ => return true,
+        };
+        span.is_some_and(|(near, far)| !(near > q.tmax || far < q.tmin))
     }
 }
 
@@ -470,6 +502,11 @@ impl Object {
         {
             q_clip(csg.bounds, q)?;
         }
+        if let Object::Csg(csg) = self
+            && !csg.meets_hull(q)
+        {
+            return None;
+        }
         match self {
             Object::Leaf(leaf) => {
                 if !leaf.visibility.sees(q.kind) {
@@ -524,6 +561,11 @@ impl Object {
     /// surface, in no particular order.
     pub fn all_hits<'a>(&'a self, q: &Query, out: &mut Vec<Hit<'a>>) {
         if self.bounds().is_finite() && q_clip(self.bounds(), q).is_none() {
+            return;
+        }
+        if let Object::Csg(csg) = self
+            && !csg.meets_hull(q)
+        {
             return;
         }
         match self {
@@ -642,6 +684,30 @@ mod tests {
         }
         let end = tilt.transform_point3(DVec3::new(-0.5, 1.2, 0.0));
         assert!((b.min.x - end.x).abs() < 1e-6, "{b:?}");
+    }
+
+    /// A box clipped by a sphere inside it shows the box's faces where the sphere holds
+    /// them; rays through the box's corners, which pass by the sphere, and rays whose
+    /// interval ends before it meet nothing.
+    #[test]
+    fn a_clipping_sphere_bounds_what_it_clips() {
+        let world = crate::build::world_of_source(
+            "box { -1, 1 clipped_by { sphere { 0, 1.2 } } }
+             intersection { sphere { <5, 0, 0>, 1 } box { <4, -0.5, -2>, <6, 0.5, 2> } }",
+        );
+        let nearest = |origin: DVec3, tmax: f64| {
+            let q = Query::new(Ray::new(origin, DVec3::Z), RayKind::Primary, 1e-9, tmax);
+            world.bvh.nearest(&q, &mut Vec::new()).map(|hit| hit.t)
+        };
+        assert_eq!(
+            nearest(DVec3::new(0.2, 0.3, -5.0), f64::INFINITY),
+            Some(4.0)
+        );
+        assert_eq!(nearest(DVec3::new(0.95, 0.95, -5.0), f64::INFINITY), None);
+        assert_eq!(nearest(DVec3::new(0.2, 0.3, -5.0), 3.0), None);
+        let intersection = nearest(DVec3::new(5.0, 0.2, -5.0), f64::INFINITY).unwrap();
+        assert!((intersection - (5.0 - 0.96f64.sqrt())).abs() < 1e-12);
+        assert_eq!(nearest(DVec3::new(5.0, 0.7, -5.0), f64::INFINITY), None);
     }
 
     /// Scenes hold up to a hundred thousand objects and more; an object stays a few

@@ -35,7 +35,7 @@ impl Cuboid {
     }
 
     /// Where the ray enters and leaves the box, with the faces it crosses.
-    fn crossings(&self, ray: &Ray) -> Option<(Root, Root)> {
+    pub(crate) fn crossings(&self, ray: &Ray) -> Option<(Root, Root)> {
         let mut near = f64::NEG_INFINITY;
         let mut far = f64::INFINITY;
         let mut near_part = 0;

@@ -22,6 +22,11 @@ impl Sphere {
         super::nearest_in(&[t1, t2], tmin, tmax).map(|t| Root { t, part: 0 })
     }
 
+    /// Where the ray enters and leaves the sphere.
+    pub fn span(&self, ray: &Ray) -> Option<(f64, f64)> {
+        crossings(ray)
+    }
+
     pub fn inside(&self, p: DVec3) -> bool {
         p.length_squared() < 1.0
     }
