@@ -71,13 +71,14 @@ impl Julia {
 
     /// Whether the orbit of `p` stays bounded.
     pub fn inside_point(&self, p: DVec3) -> bool {
-        self.orbit::<false>(self.lift(p)).0
+        self.orbit::<false>(self.lift(p)).inside
     }
 
-    /// Whether the orbit of `h` stays bounded, and with `DISTANCE` a lower bound of the
-    /// distance to the set when it escapes (the step a march may take). Without it the
-    /// logarithms of the estimate are skipped: bisection only asks inside or out.
-    fn orbit<const DISTANCE: bool>(&self, h: DVec4) -> (bool, f64) {
+    /// The orbit of `h`: whether it stays bounded, how far past the escape norm it went,
+    /// and with `DISTANCE` a lower bound of the distance to the set when it escapes (the
+    /// step a march may take). Without it the logarithms of the estimate are skipped: a
+    /// refinement only asks for the side and the value.
+    fn orbit<const DISTANCE: bool>(&self, h: DVec4) -> Orbit {
         match (self.algebra, self.function) {
             (JuliaAlgebra::Quaternion, JuliaFunction::Cube) => {
                 self.quaternion_orbit::<DISTANCE>(h, 3.0)
@@ -89,23 +90,29 @@ impl Julia {
 
     /// Quaternion squares or cubes. Quaternion norms multiply, so the derivative's norm
     /// for the distance estimate is the power times the product of the orbit's norms.
-    fn quaternion_orbit<const DISTANCE: bool>(&self, h: DVec4, power: f64) -> (bool, f64) {
+    fn quaternion_orbit<const DISTANCE: bool>(&self, h: DVec4, power: f64) -> Orbit {
         let p = self.parameter;
         let (mut x, mut y, mut z, mut w) = (h.x, h.y, h.z, h.w);
         let mut product: f64 = 1.0;
         let mut scale = 1.0;
+        let mut peak: f64 = 0.0;
         for _ in 0..self.iterations {
             let d = y * y + z * z + w * w;
             let x2 = x * x;
             let norm = x2 + d;
             if norm > self.exit {
+                let value = norm - self.exit;
+                let stretch = stretch(scale, product, power);
                 if !DISTANCE {
-                    return (false, 0.0);
+                    return Orbit::escaped(value, 0.0, stretch);
                 }
                 // POV-Ray's estimate over the k points of the orbit so far, the escaping
                 // one included: |h|·ln|h|² / (n^k · Π|h_j|).
                 let dist = norm.ln() / (product.sqrt() * scale * power);
-                return (false, dist);
+                return Orbit::escaped(value, dist, stretch);
+            }
+            if !DISTANCE {
+                peak = max(peak, norm);
             }
             product *= norm;
             scale *= power;
@@ -123,21 +130,28 @@ impl Julia {
                 w = w * t + p.w;
             }
         }
-        (true, self.min_step)
+        self.bounded::<DISTANCE>(peak, stretch(scale, product, power))
     }
 
     /// Hypercomplex iteration: the algebra splits into two complex planes,
     /// (x - w) + i(y + z) and (x + w) + i(y - z), where f acts on each.
-    fn hypercomplex_orbit<const DISTANCE: bool>(&self, h: DVec4) -> (bool, f64) {
+    fn hypercomplex_orbit<const DISTANCE: bool>(&self, h: DVec4) -> Orbit {
         let (mut a, mut b) = split(h);
         let (pa, pb) = split(self.parameter);
         let mut da = Complex::ONE;
         let mut db = Complex::ONE;
+        let mut peak: f64 = 0.0;
         for _ in 0..self.iterations {
             let norm = merged_norm(a, b);
             if norm > self.exit || !norm.is_finite() {
+                // An orbit lost to overflow has gone past any norm.
+                let value = if norm.is_finite() {
+                    norm - self.exit
+                } else {
+                    f64::MAX
+                };
                 if !DISTANCE {
-                    return (false, 0.0);
+                    return Orbit::escaped(value, 0.0, f64::INFINITY);
                 }
                 let derivative = 0.5 * (da.norm() + db.norm());
                 let dist = if derivative > 0.0 {
@@ -145,7 +159,10 @@ impl Julia {
                 } else {
                     self.min_step
                 };
-                return (false, max(dist, 0.0));
+                return Orbit::escaped(value, max(dist, 0.0), f64::INFINITY);
+            }
+            if !DISTANCE {
+                peak = max(peak, norm);
             }
             let (fa, fda) = apply(self.function, a);
             let (fb, fdb) = apply(self.function, b);
@@ -154,7 +171,20 @@ impl Julia {
             a = fa.add(pa);
             b = fb.add(pb);
         }
-        (true, self.min_step)
+        // How the orbit stretches is not tracked here: refining a crossing halves.
+        self.bounded::<DISTANCE>(peak, f64::INFINITY)
+    }
+
+    /// A bounded orbit whose largest squared norm was `peak`. A march, which asks for
+    /// distances, leaves the peak untracked: it costs a comparison every step, and only
+    /// the ends of a short bracket need it.
+    fn bounded<const DISTANCE: bool>(&self, peak: f64, stretch: f64) -> Orbit {
+        Orbit {
+            inside: true,
+            dist: self.min_step,
+            value: if DISTANCE { f64::NAN } else { peak - self.exit },
+            stretch,
+        }
     }
 
     /// The nearest crossing in `(tmin, tmax)` when `first` is set, or up to `out.len()`
@@ -190,60 +220,109 @@ impl Julia {
             return 0;
         }
         let mut next_point = ray.origin + dir * depth;
-        let (mut current, mut dist) = self.orbit::<true>(self.lift(next_point));
-        if current {
+        let mut here = self.orbit::<true>(self.lift(next_point));
+        if here.inside {
             // A ray starting inside (a shadow ray from the surface) moves off first.
             next_point += dir * (2.0 * TOLERANCE);
             depth += 2.0 * TOLERANCE;
             if depth > end {
                 return 0;
             }
-            (current, dist) = self.orbit::<true>(self.lift(next_point));
+            here = self.orbit::<true>(self.lift(next_point));
         }
         let mut found = 0;
         'march: while depth < end && found < out.len() {
             // March until a step lands on the other side of the boundary.
-            let (mut point, next, next_dist) = loop {
-                let step = max(dist, self.min_step);
+            let (point, step, next) = loop {
+                let step = max(here.dist, self.min_step);
                 depth += step;
                 if depth > end {
                     break 'march;
                 }
                 let before = next_point;
                 next_point += dir * step;
-                let (next, next_dist) = self.orbit::<true>(self.lift(next_point));
-                if next != current {
+                let next = self.orbit::<true>(self.lift(next_point));
+                if next.inside != here.inside {
                     depth -= step;
-                    dist = step;
-                    break (before, next, next_dist);
+                    break (before, step, next);
                 }
-                dist = next_dist;
+                here = next;
             };
-            // Halve the step until it is below the tolerance, keeping the point on the
-            // starting side of the boundary.
-            while dist > TOLERANCE {
-                dist *= 0.5;
-                let mid = point + dir * dist;
-                if self.inside_point(mid) == current {
-                    point = mid;
-                    depth += dist;
-                    if depth > end {
-                        break 'march;
-                    }
-                }
-            }
-            if !current {
-                depth += dist;
+            depth += self.refine(point, dir, step, &here, &next);
+            if depth > end {
+                break;
             }
             out[found] = depth / len;
             found += 1;
             if first {
                 break;
             }
-            current = next;
-            dist = next_dist;
+            here = next;
         }
         found
+    }
+
+    /// Where the boundary crosses the step from `start` (whose orbit was `from`) to
+    /// `start + dir·step` (whose orbit was `to`, on the other side): the offset of the
+    /// inside end of the cell of the grid, the step halved down to the tolerance, that
+    /// halving finds. Halving is what POV-Ray does, and where the boundary crosses the
+    /// bracket many times (a fractal of many iterations) its choice shows. But once the
+    /// bracket is shorter than the distance over which the orbit's value (its peak norm
+    /// less the escape norm, which changes sign at the boundary) bends, the value is
+    /// nearly linear there and crosses once: regula falsi then finds halving's cell in a
+    /// few orbits where halving takes ten or more. Its trials are rounded to the grid, and
+    /// it is Illinois' variant (an end kept twice has its value halved, lest it stay put);
+    /// should two trials fail to halve the bracket, the next halves it.
+    fn refine(&self, start: DVec3, dir: DVec3, step: f64, from: &Orbit, to: &Orbit) -> f64 {
+        let mut cell = step;
+        let mut cells: u64 = 1;
+        while cell > TOLERANCE {
+            cell *= 0.5;
+            cells *= 2;
+        }
+        let (mut a, mut fa, mut sa) = (0, from.value, from.stretch);
+        let (mut b, mut fb, mut sb) = (cells, to.value, to.stretch);
+        let mut kept_a = None;
+        let (mut earlier, mut last) = (u64::MAX, u64::MAX);
+        while b - a > 1 {
+            let width = b - a;
+            let length = width as f64 * cell;
+            let straight = length * length * max(sa, sb) < 1.0;
+            let trial = if straight && width < earlier / 2 {
+                // An end the march left without its value gets it now.
+                let value_at = |at: u64| {
+                    self.orbit::<false>(self.lift(start + dir * (at as f64 * cell)))
+                        .value
+                };
+                if fa.is_nan() {
+                    fa = value_at(a);
+                }
+                if fb.is_nan() {
+                    fb = value_at(b);
+                }
+                let x = a as f64 + width as f64 * (fa / (fa - fb));
+                // Rounded to the grid, strictly inside the bracket (NaN goes to its start).
+                (x.round() as u64).clamp(a + 1, b - 1)
+            } else {
+                a + width / 2
+            };
+            (earlier, last) = (last, width);
+            let orbit = self.orbit::<false>(self.lift(start + dir * (trial as f64 * cell)));
+            if orbit.inside == from.inside {
+                (a, fa, sa) = (trial, orbit.value, orbit.stretch);
+                if kept_a == Some(false) {
+                    fb *= 0.5;
+                }
+                kept_a = Some(false);
+            } else {
+                (b, fb, sb) = (trial, orbit.value, orbit.stretch);
+                if kept_a == Some(true) {
+                    fa *= 0.5;
+                }
+                kept_a = Some(true);
+            }
+        }
+        (if from.inside { a } else { b }) as f64 * cell
     }
 
     /// The gradient of |h_n|² at `p`: outward where orbits escape.
@@ -341,6 +420,44 @@ impl Julia {
                 let (ga, gb) = split(g);
                 merge(apply(f, a).1.conj().mul(ga), apply(f, b).1.conj().mul(gb))
             }
+        }
+    }
+}
+
+/// The squared norm of a quaternion orbit's derivative after k steps of `power` (2 or 3),
+/// from the power to the k and the product of the orbit's squared norms: each square
+/// stretches by 2|h|, each cube by 3|h|².
+fn stretch(scale: f64, product: f64, power: f64) -> f64 {
+    if power == 2.0 {
+        scale * scale * product
+    } else {
+        let d = scale * product;
+        d * d
+    }
+}
+
+/// What an orbit tells of its starting point.
+#[derive(Debug, Clone, Copy)]
+struct Orbit {
+    inside: bool,
+    /// How far a march may step from the point.
+    dist: f64,
+    /// The largest squared norm of the orbit less the escape norm: positive outside,
+    /// negative or zero inside, and continuous across the boundary; NaN where not taken.
+    value: f64,
+    /// The square of how far the orbit's last point moves per unit the start moves (a
+    /// bound, for quaternions, the norm of the derivative; infinite when not known): the
+    /// value bends over distances of about its inverse root.
+    stretch: f64,
+}
+
+impl Orbit {
+    fn escaped(value: f64, dist: f64, stretch: f64) -> Orbit {
+        Orbit {
+            inside: false,
+            dist,
+            value,
+            stretch,
         }
     }
 }
@@ -639,6 +756,59 @@ mod tests {
                 (got - want).length() < 1e-5 * want.length(),
                 "{iterations}: {got} {want}"
             );
+        }
+    }
+
+    /// Where halving the march's step down to the tolerance, as POV-Ray does, puts the
+    /// crossing: the inside end of the last cell.
+    fn halving(julia: &Julia, start: DVec3, dir: DVec3, step: f64, inside: bool) -> f64 {
+        let (mut depth, mut dist) = (0.0, step);
+        while dist > TOLERANCE {
+            dist *= 0.5;
+            if julia.inside_point(start + dir * (depth + dist)) == inside {
+                depth += dist;
+            }
+        }
+        if inside { depth } else { depth + dist }
+    }
+
+    #[test]
+    fn refining_finds_the_cell_halving_finds() {
+        // Rays across the gallery's fractal (8 iterations), a rougher one (20) and a cube:
+        // every march step that crosses the boundary is refined to halving's cell.
+        let cube = Julia::new(
+            DVec4::new(-0.083, 0.0, -0.83, -0.025),
+            JuliaAlgebra::Quaternion,
+            JuliaFunction::Cube,
+            6,
+            50.0,
+            DVec4::new(0.0, 0.0, 0.0, 1.0),
+            0.15,
+        );
+        for (iterations, julia) in [(8, gallery_julia(8)), (20, gallery_julia(20)), (6, cube)] {
+            let mut refined = 0;
+            for k in 0..400 {
+                let (x, y) = (-1.0 + 0.005 * f64::from(k), 0.3 - 0.0015 * f64::from(k));
+                let dir = DVec3::new(0.05, -0.02, 1.0).normalize();
+                let mut start = DVec3::new(x, y, -2.0);
+                let mut here = julia.orbit::<true>(julia.lift(start));
+                for _ in 0..400 {
+                    let step = max(here.dist, julia.min_step);
+                    let next_point = start + dir * step;
+                    let next = julia.orbit::<true>(julia.lift(next_point));
+                    if next.inside != here.inside {
+                        let want = halving(&julia, start, dir, step, here.inside);
+                        let got = julia.refine(start, dir, step, &here, &next);
+                        assert!(
+                            (got - want).abs() <= 1e-12,
+                            "{iterations} iterations, ray {k}: {got} {want}"
+                        );
+                        refined += 1;
+                    }
+                    (start, here) = (next_point, next);
+                }
+            }
+            assert!(refined > 100, "{refined}");
         }
     }
 
