@@ -13,6 +13,7 @@ use crate::ray::Ray;
 use analysis::function::Function;
 use analysis::scene::math_shapes::Container;
 use glam::DVec3;
+use std::cell::Cell;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
@@ -110,8 +111,8 @@ impl Search<'_> {
     }
 
     /// POV-Ray's recursive halving over `[t1, t2]` with values `f1`, `f2`; the far end of
-    /// the first short stretch that ends inside.
-    fn halve(&mut self, t1: f64, f1: f64, t2: f64, f2: f64, reach: f64) -> Option<f64> {
+    /// the first short stretch that ends inside, and the value there.
+    fn halve(&mut self, t1: f64, f1: f64, t2: f64, f2: f64, reach: f64) -> Option<(f64, f64)> {
         let span = t2 - t1;
         let slope = (f2 - f1).abs() / (self.speed * span);
         if slope > self.gradient {
@@ -125,7 +126,7 @@ impl Search<'_> {
             reach = self.max_gradient * self.speed * span;
         }
         if span * self.speed < self.iso.accuracy {
-            return (f2 < 0.0).then_some(t2);
+            return (f2 < 0.0).then_some((t2, f2));
         }
         if f1 + f2 - reach >= 0.0 {
             return None;
@@ -138,7 +139,7 @@ impl Search<'_> {
 
     /// The first crossing in `[t1, t2]`, flipping the searched-for side first when the
     /// search starts inside an open isosurface.
-    fn find(&mut self, t1: f64, t2: f64) -> Option<f64> {
+    fn find(&mut self, t1: f64, t2: f64) -> Option<(f64, f64)> {
         let mut f1 = self.value(t1);
         if !self.iso.closed && f1 < 0.0 {
             self.side = -self.side;
@@ -271,9 +272,16 @@ impl Isosurface {
             roots.push(t, part);
         }
         while traced < self.max_trace {
-            let Some(t) = search.find(tmin, tmax) else {
+            let Some((t, value)) = search.find(tmin, tmax) else {
                 break;
             };
+            if traced == 0 {
+                remember_crossing(
+                    self,
+                    search.origin + search.direction * t,
+                    search.side * value,
+                );
+            }
             roots.push(t, PART_SURFACE);
             traced += 1;
             tmin = t + accuracy * 5.0;
@@ -317,7 +325,7 @@ impl Isosurface {
             },
             _ => {
                 let h = self.accuracy;
-                let f = self.value(p);
+                let f = remembered_value(self, p).unwrap_or_else(|| self.value(p));
                 let n = DVec3::new(
                     self.value(p + DVec3::X * h) - f,
                     self.value(p + DVec3::Y * h) - f,
@@ -340,6 +348,33 @@ impl Isosurface {
             Container::Box { corner1, corner2 } => (corner1, corner2),
         }
     }
+}
+
+thread_local! {
+    /// The isosurface (by address), point and value of the nearest crossing this thread
+    /// found last: the normal is asked for there next, and its differences start from
+    /// that value, which then costs no evaluation. A value is a function of the point
+    /// alone, so whether it comes from here or is computed again changes nothing.
+    static LAST_CROSSING: Cell<(usize, [u64; 3], f64)> = const { Cell::new((0, [0; 3], 0.0)) };
+}
+
+/// The key of a point of an isosurface in [`LAST_CROSSING`]: exact, bit for bit.
+fn crossing_key(iso: &Isosurface, p: DVec3) -> (usize, [u64; 3]) {
+    (
+        std::ptr::from_ref(iso) as usize,
+        p.to_array().map(f64::to_bits),
+    )
+}
+
+fn remember_crossing(iso: &Isosurface, p: DVec3, value: f64) {
+    let (address, point) = crossing_key(iso, p);
+    LAST_CROSSING.set((address, point, value));
+}
+
+/// The value at `p` when it is the crossing found last.
+fn remembered_value(iso: &Isosurface, p: DVec3) -> Option<f64> {
+    let (address, point, value) = LAST_CROSSING.get();
+    (crossing_key(iso, p) == (address, point)).then_some(value)
 }
 
 /// POV-Ray's warning about max_gradient after a render, when the gradient found calls for
@@ -428,6 +463,22 @@ mod tests {
         let n = s.normal(Ray::new(DVec3::new(0.2, 0.1, -5.0), DVec3::Z).at(r[0].t), 0);
         assert!(n.normalize().dot(DVec3::new(0.2, 0.1, -0.97).normalize()) > 0.99);
         assert!(warning(&s).is_none(), "{:?}", warning(&s));
+    }
+
+    #[test]
+    fn the_normal_at_the_crossing_found_last_reuses_its_value() {
+        let s = iso(sphere_function(1.0), 1.1, true);
+        let ray = Ray::new(DVec3::new(0.2, 0.1, -5.0), DVec3::Z);
+        let mut roots = Roots::new();
+        s.intersect(&ray, &mut roots);
+        let p = ray.at(roots.as_slice()[0].t);
+        assert_eq!(remembered_value(&s, p), Some(s.value(p)));
+        let remembered = s.normal(p, 0);
+        // Another ray's crossing takes its place: the normal is computed afresh, alike.
+        let other = Ray::new(DVec3::new(-0.3, 0.2, -5.0), DVec3::Z);
+        s.intersect(&other, &mut Roots::new());
+        assert_eq!(remembered_value(&s, p), None);
+        assert_eq!(s.normal(p, 0), remembered);
     }
 
     #[test]
