@@ -310,16 +310,26 @@ fn cheapest_bin(items: &[Item], centres: &Aabb) -> Option<(f64, usize, usize)> {
             continue;
         }
         let (counts, boxes) = (&counts[axis], &boxes[axis]);
-        // The cost of everything right of each boundary, swept from the right.
+        // The cost of everything right of each boundary, swept from the right. An empty
+        // bin changes neither side, so it costs no area: near the leaves, where a node
+        // holds a few items, most bins are empty, and there are as many nodes as items.
         let mut right_cost = [0.0; BINS];
-        let (mut area_box, mut count) = (Aabb::EMPTY, 0);
+        let (mut area_box, mut count, mut cost) = (Aabb::EMPTY, 0, 0.0);
         for b in (1..BINS).rev() {
-            area_box = area_box.union(&boxes[b]);
-            count += counts[b];
-            right_cost[b] = surface_area(&area_box) * count as f64;
+            if counts[b] > 0 {
+                area_box = area_box.union(&boxes[b]);
+                count += counts[b];
+                cost = surface_area(&area_box) * count as f64;
+            }
+            right_cost[b] = cost;
         }
         let (mut left_box, mut left_count) = (Aabb::EMPTY, 0);
         for b in 0..BINS - 1 {
+            // A boundary after an empty bin divides as the one before it does, at the
+            // same cost, and the first of equal costs is kept.
+            if counts[b] == 0 {
+                continue;
+            }
             left_box = left_box.union(&boxes[b]);
             left_count += counts[b];
             if left_count == 0 || left_count == items.len() {
