@@ -5,9 +5,11 @@
 //! of POV-Ray 3.7's renders, each offset and width then recognised as a number of the form
 //! `(a + b√2)/4`, `(a + b√3)/4` or `(a + b√3)/12`, and so reproduces POV-Ray's values to
 //! 1e-5. Here a period's tiles are placed so that every point of one period cell finds its
-//! tile among a short list.
+//! tile among a short list: the cell is cut into a grid, and each grid square lists the
+//! few tiles that reach into it.
 
 use glam::{DVec2, DVec3};
+use std::ops::Range;
 use std::sync::OnceLock;
 
 /// The tilings POV-Ray numbers 1 to 27 that are implemented: 1 to 24.
@@ -27,9 +29,36 @@ struct Tile {
     edges: Vec<Edge>,
 }
 
+impl Tile {
+    /// The least of the ramps of the tile's edges at `q` (NaN ramps left out).
+    fn ramp(&self, q: DVec2) -> f64 {
+        self.edges.iter().fold(f64::INFINITY, |least, e| {
+            least.min(e.normal.dot(q) - e.offset)
+        })
+    }
+
+    /// [`Tile::ramp`] when it is not negative (the tile holds `q`); `None` from the first
+    /// negative ramp on.
+    fn ramp_if_holding(&self, q: DVec2) -> Option<f64> {
+        let mut least = f64::INFINITY;
+        for e in &self.edges {
+            let ramp = e.normal.dot(q) - e.offset;
+            if ramp < 0.0 {
+                return None;
+            }
+            least = least.min(ramp);
+        }
+        Some(least)
+    }
+}
+
+/// How many grid squares the period cell is cut into along each of its sides.
+const GRID: usize = 16;
+
 /// A tiling ready to evaluate: its period, the dual basis that finds a point's place in
 /// the period, and every copy of its tiles that overlaps the period cell spanned by `a`
-/// and `b` from the origin.
+/// and `b` from the origin, with for each square of the cell's grid (row by row in the
+/// `b` direction) the range of `candidates` that lists the tiles reaching into it.
 struct Tiling {
     types: f64,
     a: DVec2,
@@ -37,6 +66,8 @@ struct Tiling {
     dual_a: DVec2,
     dual_b: DVec2,
     tiles: Vec<Tile>,
+    squares: Vec<Range<u32>>,
+    candidates: Vec<u16>,
 }
 
 fn tilings() -> &'static [Tiling] {
@@ -107,30 +138,57 @@ pub fn value(number: u8, p: DVec3) -> f64 {
     let tiling = &tilings()[usize::from(number) - 1];
     let q = DVec2::new(p.x, p.z);
     let (u, v) = (tiling.dual_a.dot(q), tiling.dual_b.dot(q));
-    let q = tiling.a * (u - u.floor()) + tiling.b * (v - v.floor());
-    // The tile that holds the point has every ramp non-negative; a point that rounding
-    // leaves just outside every tile takes the one it is least outside of.
-    let mut best = (f64::NEG_INFINITY, 0.0);
-    for tile in &tiling.tiles {
-        let ramp = tile.edges.iter().fold(f64::INFINITY, |least, e| {
-            least.min(e.normal.dot(q) - e.offset)
-        });
-        if ramp > best.0 {
-            best = (ramp, tile.kind);
-            if ramp >= 0.0 {
-                break;
-            }
-        }
-    }
-    (best.1 + 1.0 - best.0.clamp(0.0, 1.0)) / tiling.types
+    tiling.value_in_cell(u - u.floor(), v - v.floor())
+}
+
+/// The grid square along one side of the period cell that holds the fraction `t` of it
+/// (`t` in 0..=1, where rounding can give 1; NaN goes to the first square).
+fn grid_index(t: f64) -> usize {
+    ((t * GRID as f64) as usize).min(GRID - 1)
 }
 
 impl Tiling {
+    /// The value at the point `u a + v b` of the period cell (`u`, `v` in 0..=1). The grid
+    /// square's candidates keep the tiles' order, so the tile found is the one a search of
+    /// every tile would find.
+    fn value_in_cell(&self, u: f64, v: f64) -> f64 {
+        let Range { start, end } = self.squares[grid_index(v) * GRID + grid_index(u)].clone();
+        let candidates = self.candidates[start as usize..end as usize].iter();
+        let tiles = candidates.map(|&index| &self.tiles[usize::from(index)]);
+        self.value_among(tiles, self.a * u + self.b * v)
+    }
+
+    /// The value at `q` of the first of `tiles` that holds it. The tile that holds a point
+    /// has every ramp non-negative, and the search leaves every other tile at its first
+    /// negative ramp; a point that rounding leaves just outside every tile takes the first
+    /// one it is least outside of.
+    fn value_among<'a>(&self, tiles: impl Iterator<Item = &'a Tile> + Clone, q: DVec2) -> f64 {
+        let value = |kind: f64, ramp: f64| (kind + 1.0 - ramp.clamp(0.0, 1.0)) / self.types;
+        for tile in tiles.clone() {
+            if let Some(ramp) = tile.ramp_if_holding(q) {
+                return value(tile.kind, ramp);
+            }
+        }
+        let mut best = (f64::NEG_INFINITY, 0.0);
+        for tile in tiles {
+            let ramp = tile.ramp(q);
+            if ramp > best.0 {
+                best = (ramp, tile.kind);
+            }
+        }
+        value(best.1, best.0)
+    }
+
     fn new(layout: &Layout) -> Tiling {
         let (a, b) = (layout.a, layout.b);
         let det = a.perp_dot(b);
         let cell = [DVec2::ZERO, a, a + b, b];
+        let dual_a = DVec2::new(b.y, -b.x) / det;
+        let dual_b = DVec2::new(-a.y, a.x) / det;
         let mut tiles = Vec::new();
+        // Each tile's extent in the cell's own coordinates (fractions of `a` and `b`),
+        // where the grid squares it may reach are a rectangle.
+        let mut extents = Vec::new();
         for (kind, edges) in &layout.tiles {
             let lines: Vec<(DVec2, f64, f64)> = edges
                 .iter()
@@ -147,6 +205,13 @@ impl Tiling {
                     if !overlaps(&moved, &cell) {
                         continue;
                     }
+                    extents.push(moved.iter().fold(
+                        (DVec2::INFINITY, DVec2::NEG_INFINITY),
+                        |(lo, hi), c| {
+                            let uv = DVec2::new(dual_a.dot(*c), dual_b.dot(*c));
+                            (lo.min(uv), hi.max(uv))
+                        },
+                    ));
                     tiles.push(Tile {
                         kind: f64::from(*kind),
                         edges: lines
@@ -160,15 +225,49 @@ impl Tiling {
                 }
             }
         }
+        let (squares, candidates) = grid_candidates(&extents);
         Tiling {
             types: f64::from(layout.types),
             a,
             b,
-            dual_a: DVec2::new(b.y, -b.x) / det,
-            dual_b: DVec2::new(-a.y, a.x) / det,
+            dual_a,
+            dual_b,
             tiles,
+            squares,
+            candidates,
         }
     }
+}
+
+/// For each grid square of the period cell (row by row in `v`), the range of the returned
+/// list that names, in order, the tiles whose `extents` (lowest and highest `u`, `v`)
+/// reach into it. Extents are widened by a margin far above rounding, so a point that
+/// rounding moves across a square's side still finds its tile.
+fn grid_candidates(extents: &[(DVec2, DVec2)]) -> (Vec<Range<u32>>, Vec<u16>) {
+    const MARGIN: f64 = 1e-6;
+    let squares_of = |lo: f64, hi: f64| {
+        let first = ((lo - MARGIN) * GRID as f64).floor().max(0.0) as usize;
+        let last = ((hi + MARGIN) * GRID as f64).floor().max(0.0) as usize;
+        first..=last.min(GRID - 1)
+    };
+    let mut lists = vec![Vec::new(); GRID * GRID];
+    for (index, (lo, hi)) in extents.iter().enumerate() {
+        for j in squares_of(lo.y, hi.y) {
+            for i in squares_of(lo.x, hi.x) {
+                lists[j * GRID + i].push(index as u16);
+            }
+        }
+    }
+    let mut candidates = Vec::new();
+    let squares = lists
+        .into_iter()
+        .map(|list| {
+            let start = candidates.len() as u32;
+            candidates.extend(list);
+            start..candidates.len() as u32
+        })
+        .collect();
+    (squares, candidates)
 }
 
 /// The corners of the convex polygon bounded by `lines` (normal, offset, width), whose
@@ -249,9 +348,27 @@ mod tests {
                     let holding = tiling
                         .tiles
                         .iter()
-                        .filter(|tile| tile.edges.iter().all(|e| e.normal.dot(q) - e.offset > 1e-9))
+                        .filter(|tile| tile.ramp(q) > 1e-9)
                         .count();
                     assert_eq!(holding, 1, "tiling {} at {q}", index + 1);
+                }
+            }
+        }
+    }
+
+    /// Each grid square's candidates include every tile that holds a point of the square:
+    /// points on a fine lattice, the squares' own sides among them, find their tile among
+    /// the candidates exactly as a search of every tile does.
+    #[test]
+    fn grid_squares_list_every_tile_that_reaches_them() {
+        let steps = GRID * 12;
+        for tiling in tilings() {
+            for i in 0..=steps {
+                for j in 0..=steps {
+                    let (u, v) = (i as f64 / steps as f64, j as f64 / steps as f64);
+                    let q = tiling.a * u + tiling.b * v;
+                    let everywhere = tiling.value_among(tiling.tiles.iter(), q);
+                    assert_eq!(tiling.value_in_cell(u, v), everywhere, "at {q}");
                 }
             }
         }
