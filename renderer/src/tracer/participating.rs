@@ -45,10 +45,14 @@ impl<'w> Tracer<'w> {
         if self.inside.interiors().iter().any(|i| !i.hollow) {
             return sample;
         }
-        let inside = self.inside.interiors().to_vec();
-        let atmosphere = world.atmosphere.clone();
+        let atmosphere = world.atmosphere.as_deref();
+        // Most rays of a foggy scene or one with a rainbow cross no medium: they skip the
+        // media's set-up (a copy of the interiors, a seed) along with the media.
+        let has_media = atmosphere.is_some_and(|a| !a.media.is_empty())
+            || self.inside.interiors().iter().any(|i| !i.media.is_empty());
         let mut passage = Passage::CLEAR;
-        if depth.is_finite() {
+        if depth.is_finite() && has_media {
+            let inside = self.inside.interiors().to_vec();
             let mut splits = Vec::new();
             let scattering = inside
                 .iter()
