@@ -25,30 +25,40 @@ pub struct Rainbow {
     colours: Vec<(f64, Colour)>,
     half_arc: f64,
     half_falloff: f64,
+    /// The lowest and highest cosine of a ray's angle from `direction` at which the bow,
+    /// jittered, may show: most rays fall outside and need no arc cosine.
+    visible_cosines: (f64, f64),
 }
 
 impl Rainbow {
     pub fn from_scene(rainbow: &scene::Rainbow) -> Rainbow {
         let direction = rainbow.direction.normalize_or(DVec3::Z);
         let up = (rainbow.up - direction * rainbow.up.dot(direction)).normalize_or_zero();
+        let inner = (rainbow.angle - rainbow.width / 2.0).to_radians();
+        let width = rainbow.width.to_radians();
         let mut colours = rainbow.colour_map.entries.clone();
         colours.sort_by(|a, b| a.0.total_cmp(&b.0));
         Rainbow {
             direction,
             up,
-            inner: (rainbow.angle - rainbow.width / 2.0).to_radians(),
-            width: rainbow.width.to_radians(),
+            inner,
+            width,
             distance: rainbow.distance,
             jitter: rainbow.jitter,
             colours,
             half_arc: (rainbow.arc_angle / 2.0).to_radians(),
             half_falloff: (rainbow.falloff_angle / 2.0).to_radians(),
+            visible_cosines: visible_cosines(inner, width, rainbow.jitter),
         }
     }
 
     /// The bow seen along the unit `direction` over `depth`; `None` off the bow.
     pub fn veil(&self, direction: DVec3, depth: f64) -> Option<Veil> {
-        let angle = direction.dot(self.direction).clamp(-1.0, 1.0).acos();
+        let cosine = direction.dot(self.direction);
+        if cosine < self.visible_cosines.0 || cosine > self.visible_cosines.1 {
+            return None;
+        }
+        let angle = cosine.clamp(-1.0, 1.0).acos();
         let mut index = (angle - self.inner) / self.width;
         if self.jitter > 0.0 {
             index += self.jitter * (scatter(direction) - 0.5);
@@ -87,6 +97,21 @@ impl Rainbow {
             added: weight * (1.0 - k) * colour.rgb,
         })
     }
+}
+
+/// The lowest and highest cosine of the angles at which a bow from `inner` over `width`
+/// (radians) may show, its index jittered by up to half of `jitter` either way; the
+/// whole range -1..=1 when the width is not positive. A margin far above the arc cosine's
+/// rounding keeps every ray that could show the bow.
+fn visible_cosines(inner: f64, width: f64, jitter: f64) -> (f64, f64) {
+    const MARGIN: f64 = 1e-9;
+    if width.is_nan() || width <= 0.0 {
+        return (f64::NEG_INFINITY, f64::INFINITY);
+    }
+    let reach = 0.5 * jitter.max(0.0) * width;
+    let nearest = (inner - reach).clamp(0.0, PI);
+    let farthest = (inner + width + reach).clamp(0.0, PI);
+    (farthest.cos() - MARGIN, nearest.cos() + MARGIN)
 }
 
 /// A number in 0..1 fixed for each direction, for the jitter.
@@ -134,5 +159,25 @@ mod tests {
         let v = rainbow.veil(towards(20.0, 30.0), 1.0).unwrap();
         assert!((v.added.z - 0.75).abs() < 1e-9, "{v:?}");
         assert!(rainbow.veil(towards(20.0, 61.0), 1.0).is_none());
+    }
+
+    /// Rays just inside either edge of the bow, jittered or not, pass the cosine test; rays
+    /// beyond the jitter's reach do not.
+    #[test]
+    fn visible_cosines_hold_the_whole_jittered_bow() {
+        let (inner, width) = (15f64.to_radians(), 10f64.to_radians());
+        let inside = |angle: f64, (lo, hi): (f64, f64)| (lo..=hi).contains(&angle.cos());
+        let plain = visible_cosines(inner, width, 0.0);
+        assert!(inside(inner + 1e-12, plain) && inside(inner + width - 1e-12, plain));
+        assert!(!inside(inner - 1e-3, plain) && !inside(inner + width + 1e-3, plain));
+        // A jitter of 0.5 moves the index by up to a quarter of the width either way.
+        let jittered = visible_cosines(inner, width, 0.5);
+        assert!(inside(inner - 0.24 * width, jittered));
+        assert!(inside(inner + 1.24 * width, jittered));
+        assert!(!inside(inner - 0.26 * width, jittered));
+        assert_eq!(
+            visible_cosines(inner, 0.0, 0.0),
+            (f64::NEG_INFINITY, f64::INFINITY)
+        );
     }
 }
