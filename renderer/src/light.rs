@@ -263,8 +263,12 @@ impl Light {
                 if cos <= 0.0 {
                     return 0.0;
                 }
+                // The common tightnesses 0 and 1 need no power (a library call per
+                // shadow ray and media sample), and give the same numbers without it.
                 a = if tightness == 0.0 {
                     1.0
+                } else if tightness == 1.0 {
+                    cos
                 } else {
                     cos.powf(tightness)
                 };
