@@ -62,7 +62,13 @@ pub fn render_with_warnings(
         jitter: options.jitter_amount().max(0.0),
         compare: CompareCurve {
             working,
-            aa: EncodeTable::new(Curve::Power(options.aa_gamma.unwrap_or(2.5))),
+            // Without antialiasing no samples are compared, and the table (thousands of
+            // powers, a fixed cost of every render) is not built.
+            aa: EncodeTable::new(if options.antialias {
+                Curve::Power(options.aa_gamma.unwrap_or(2.5))
+            } else {
+                Curve::Identity
+            }),
         },
     };
     let samples = if !options.antialias {
