@@ -27,6 +27,9 @@ const MAX_DEPTH: usize = 120;
 /// array is zeroed on every traversal, so it is no larger than most trees need.
 const INLINE_STACK: usize = 48;
 
+/// The stack of a shallow tree (the objects of most scenes), cheaper still to zero.
+const SMALL_STACK: usize = 16;
+
 #[derive(Debug, Clone, Copy)]
 struct Node {
     bounds: Aabb,
@@ -132,7 +135,16 @@ impl Tree {
         if self.nodes.is_empty() {
             return;
         }
-        if self.depth + 2 <= INLINE_STACK {
+        if self.depth + 2 <= SMALL_STACK {
+            self.walk(
+                &mut [0; SMALL_STACK],
+                ray,
+                inv_dir,
+                (tmin, tmax),
+                kind,
+                visit,
+            );
+        } else if self.depth + 2 <= INLINE_STACK {
             self.walk(
                 &mut [0; INLINE_STACK],
                 ray,
