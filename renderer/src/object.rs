@@ -436,10 +436,12 @@ impl Object {
     }
 
     /// The kinds of rays that may meet the object, as a set of [`RayKind::bit`]s: those
-    /// that see one of its leaves.
+    /// that see one of its leaves, and of a clip one of the clipped object's (what clips
+    /// it never shows: a `no_shadow` object casts no shadow, clipped or not).
     pub fn kinds(&self) -> u8 {
         match self {
             Object::Leaf(l) => l.visibility.kinds(),
+            Object::Csg(c) if c.kind == CsgKind::Clip => c.children[0].kinds(),
             Object::Csg(c) => c.children.iter().fold(0, |set, o| set | o.kinds()),
         }
     }
@@ -708,6 +710,18 @@ mod tests {
         let intersection = nearest(DVec3::new(5.0, 0.2, -5.0), f64::INFINITY).unwrap();
         assert!((intersection - (5.0 - 0.96f64.sqrt())).abs() < 1e-12);
         assert_eq!(nearest(DVec3::new(5.0, 0.7, -5.0), f64::INFINITY), None);
+    }
+
+    #[test]
+    fn a_clipped_object_is_seen_by_the_rays_it_is_seen_by() {
+        let world = crate::build::world_of_source(
+            "box { -1, 1 clipped_by { sphere { 0, 1.2 } } no_shadow }",
+        );
+        let Some(clip) = world.bvh.objects().next() else {
+            panic!("one object");
+        };
+        assert_eq!(clip.kinds() & RayKind::Shadow.bit(), 0);
+        assert_ne!(clip.kinds() & RayKind::Primary.bit(), 0);
     }
 
     /// Scenes hold up to a hundred thousand objects and more; an object stays a few
