@@ -688,6 +688,7 @@ impl Builder {
             material = Arc::new(Material {
                 transmits: surface.may_transmit(),
                 uses_uv: surface.uses_uv(),
+                uses_facing: surface.uses_facing(),
                 surface,
             });
         }

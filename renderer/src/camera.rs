@@ -183,7 +183,7 @@ impl Camera {
         if let Some(normal) = &self.normal {
             // POV-Ray samples the camera's normal pattern on the image itself, at the
             // position (x0, y0, 0), and pushes the ray's world direction by it.
-            direction = crate::normal::perturb(normal, DVec3::new(x0, y0, 0.0), direction);
+            direction = crate::normal::perturb(normal, DVec3::new(x0, y0, 0.0), direction, None);
         }
         (direction != DVec3::ZERO && direction.is_finite() && origin.is_finite())
             .then(|| Ray::new(origin, direction))

@@ -51,6 +51,9 @@ pub struct Material {
     pub transmits: bool,
     /// Whether some pattern is `uv_mapping`, so that hits must find their uv coordinates.
     pub uses_uv: bool,
+    /// Whether some pattern looks at how the surface faces the ray, so that hits must
+    /// find their normal before their texture.
+    pub uses_facing: bool,
 }
 
 /// Where a pattern value falls in a map: the entries either side and the weight of the
@@ -76,6 +79,11 @@ fn locate<T>(map: &[(f64, T)], value: PatternValue) -> (usize, usize, f64) {
     }
 }
 
+/// A pattern's value at a texture point.
+fn value_at(pattern: &scene::Pattern, at: &TexturePoint) -> PatternValue {
+    pattern::evaluate_on(pattern, at.world, at.facing.as_ref())
+}
+
 impl Surface {
     /// Calls `f` with each stack of layers that shows at `at` and its weight.
     pub fn for_each_layers(
@@ -95,7 +103,7 @@ impl Surface {
             }
             Surface::Pattern { pattern, map } => {
                 let at = at.for_pattern(pattern);
-                let (a, b, t) = locate(map, pattern::evaluate(pattern, at.world));
+                let (a, b, t) = locate(map, value_at(pattern, &at));
                 if a == b || t == 0.0 {
                     map[a].1.for_each_layers(&at, weight, f);
                 } else if t == 1.0 {
@@ -130,6 +138,19 @@ impl Surface {
             Surface::Layers(layers) => layers.iter().all(|l| l.pigment.may_transmit()),
             Surface::Pattern { map, .. } => map.iter().any(|(_, s)| s.may_transmit()),
             Surface::Blend { surfaces, .. } => surfaces.iter().any(Surface::may_transmit),
+        }
+    }
+
+    /// Whether some pattern looks at how the surface faces the ray.
+    pub fn uses_facing(&self) -> bool {
+        match self {
+            Surface::Layers(layers) => layers.iter().any(|l| {
+                l.pigment.uses_facing() || l.normal.as_ref().is_some_and(crate::normal::uses_facing)
+            }),
+            Surface::Pattern { pattern, map } => {
+                pattern::uses_facing(pattern) || map.iter().any(|(_, s)| s.uses_facing())
+            }
+            Surface::Blend { surfaces, .. } => surfaces.iter().any(Surface::uses_facing),
         }
     }
 
@@ -186,7 +207,7 @@ impl Pigment {
             }
             Pigment::Pattern { pattern, map } => {
                 let at = at.for_pattern(pattern);
-                let (a, b, t) = locate(map, pattern::evaluate(pattern, at.world));
+                let (a, b, t) = locate(map, value_at(pattern, &at));
                 if a == b || t == 0.0 {
                     map[a].1.colour_at(&at)
                 } else {
@@ -200,6 +221,16 @@ impl Pigment {
                     at.world
                 };
                 bitmap::image_map_colour(map, to_pattern.transform_point3(p))
+            }
+        }
+    }
+
+    /// Whether some pattern looks at how the surface faces the ray.
+    fn uses_facing(&self) -> bool {
+        match self {
+            Pigment::Solid(_) | Pigment::Image { .. } => false,
+            Pigment::Pattern { pattern, map } => {
+                pattern::uses_facing(pattern) || map.iter().any(|(_, p)| p.uses_facing())
             }
         }
     }
@@ -237,6 +268,7 @@ impl Material {
         Ok(Material {
             transmits: surface.may_transmit(),
             uses_uv: surface.uses_uv(),
+            uses_facing: surface.uses_facing(),
             surface,
         })
     }

@@ -14,7 +14,7 @@
 //! steep they look.
 
 use analysis::noise;
-use analysis::pattern::{self, PatternValue, cells, waves};
+use analysis::pattern::{self, Facing, PatternValue, cells, waves};
 use analysis::scene::{self, BlendMap, NormalKind, Pattern, PatternKind, Warp};
 use glam::{DMat3, DVec3};
 
@@ -39,8 +39,22 @@ pub fn check(normal: &scene::Normal) -> Result<(), String> {
     }
 }
 
-/// The perturbed unit normal at world point `p` for surface normal `n`.
-pub fn perturb(normal: &scene::Normal, p: DVec3, n: DVec3) -> DVec3 {
+/// Whether some pattern of the normal depends on how the surface faces (slope, aoi).
+pub fn uses_facing(normal: &scene::Normal) -> bool {
+    match &normal.kind {
+        NormalKind::Pattern { pattern, .. } => pattern::uses_facing(pattern),
+        NormalKind::Map { pattern, map } => {
+            pattern::uses_facing(pattern) || map.entries.iter().any(|(_, n)| uses_facing(n))
+        }
+        NormalKind::BumpMap { .. } => false,
+    }
+}
+
+/// The perturbed unit normal at world point `p` for surface normal `n`; `facing` is the
+/// surface's, for the patterns that look at it (which see `n`).
+pub fn perturb(normal: &scene::Normal, p: DVec3, n: DVec3, facing: Option<&Facing>) -> DVec3 {
+    let facing = facing.map(|f| Facing { normal: n, ..*f });
+    let facing = facing.as_ref();
     let perturbed = match &normal.kind {
         NormalKind::Pattern {
             pattern,
@@ -57,9 +71,10 @@ pub fn perturb(normal: &scene::Normal, p: DVec3, n: DVec3) -> DVec3 {
                 normal.accuracy,
                 p,
                 n,
+                facing,
             )
         }
-        NormalKind::Map { pattern, map } => mapped(pattern, map, p, n),
+        NormalKind::Map { pattern, map } => mapped(pattern, map, p, n, facing),
         NormalKind::BumpMap { pattern, bump_size } => {
             let local = pattern.transform.inverse.transform_point3(p);
             let local_normal = (into_pattern_space(pattern) * n).normalize_or_zero();
@@ -76,7 +91,13 @@ pub fn perturb(normal: &scene::Normal, p: DVec3, n: DVec3) -> DVec3 {
 
 /// A normal map: the entries either side of the pattern's value, each perturbing the
 /// normal, blended by their weights; with `average`, every entry by its share.
-fn mapped(pattern: &Pattern, map: &BlendMap<scene::Normal>, p: DVec3, n: DVec3) -> DVec3 {
+fn mapped(
+    pattern: &Pattern,
+    map: &BlendMap<scene::Normal>,
+    p: DVec3,
+    n: DVec3,
+    facing: Option<&Facing>,
+) -> DVec3 {
     let entries = &map.entries;
     if entries.is_empty() {
         return n;
@@ -86,22 +107,22 @@ fn mapped(pattern: &Pattern, map: &BlendMap<scene::Normal>, p: DVec3, n: DVec3) 
         // and normalized.
         return pattern::average_shares(entries)
             .fold(DVec3::ZERO, |sum, (share, entry)| {
-                sum + perturb(entry, p, n) * share
+                sum + perturb(entry, p, n, facing) * share
             })
             .normalize_or_zero();
     }
-    let (a, b, t) = match pattern::evaluate(pattern, p) {
+    let (a, b, t) = match pattern::evaluate_on(pattern, p, facing) {
         PatternValue::Block(i) => {
             let i = i.min(entries.len() - 1);
             (i, i, 0.0)
         }
         PatternValue::Blend(v) => pattern::blend_position(entries.iter().map(|(at, _)| *at), v),
     };
-    let lower = perturb(&entries[a].1, p, n);
+    let lower = perturb(&entries[a].1, p, n, facing);
     if a == b || t == 0.0 {
         return lower;
     }
-    let upper = perturb(&entries[b].1, p, n);
+    let upper = perturb(&entries[b].1, p, n, facing);
     (lower * (1.0 - t) + upper * t).normalize_or_zero()
 }
 
@@ -136,6 +157,7 @@ fn bumped(
     accuracy: f64,
     p: DVec3,
     n: DVec3,
+    facing: Option<&Facing>,
 ) -> DVec3 {
     let local = pattern::warped(pattern, pattern.transform.inverse.transform_point3(p));
     let local_normal = (into_pattern_space(pattern) * n).normalize_or_zero();
@@ -175,7 +197,7 @@ fn bumped(
         _ => {
             let accuracy = if accuracy > 0.0 { accuracy } else { 0.02 };
             let amount = -5.0 * bump_size * (0.02 / accuracy);
-            local_normal + pyramid(pattern, slope_map, local, accuracy) * amount
+            local_normal + pyramid(pattern, slope_map, local, accuracy, facing) * amount
         }
     };
     (out_of_pattern_space(pattern) * bumped).normalize_or_zero()
@@ -210,9 +232,10 @@ fn pyramid(
     slope_map: Option<&BlendMap<(f64, f64)>>,
     warped: DVec3,
     h: f64,
+    facing: Option<&Facing>,
 ) -> DVec3 {
     PYRAMID.iter().fold(DVec3::ZERO, |sum, corner| {
-        let value = match pattern::evaluate_warped(pattern, warped + *corner * h) {
+        let value = match pattern::evaluate_warped(pattern, warped + *corner * h, facing) {
             PatternValue::Blend(v) => v,
             PatternValue::Block(i) => i as f64,
         };
@@ -270,9 +293,9 @@ mod tests {
         };
         // Opposite tilts of equal weight cancel, leaving the surface normal.
         let p = DVec3::new(0.3, 0.0, 0.0);
-        let n = mapped(&Pattern::new(PatternKind::Average), &map, p, DVec3::Y);
+        let n = mapped(&Pattern::new(PatternKind::Average), &map, p, DVec3::Y, None);
         assert!((n - DVec3::Y).length() < 1e-9, "{n}");
-        let tilted = perturb(&bumps(0.5), p, DVec3::Y);
+        let tilted = perturb(&bumps(0.5), p, DVec3::Y, None);
         assert!((tilted - DVec3::Y).length() > 1e-3);
     }
 

@@ -12,6 +12,7 @@ use crate::photons::SurfacePhotons;
 use crate::ray::{Ray, RayKind};
 use crate::shapes::{Roots, Shape};
 use crate::texture_point::TexturePoint;
+use analysis::pattern::Facing;
 use analysis::scene::mesh::FaceTexture;
 use glam::{DAffine3, DVec3};
 use std::sync::Arc;
@@ -67,6 +68,8 @@ pub struct Leaf {
     pub transmits: bool,
     /// Whether some pattern of its materials is uv-mapped.
     uses_uv: bool,
+    /// Whether some pattern of its materials looks at how the surface faces the ray.
+    uses_facing: bool,
     /// The set of lights that shine on the leaf (see `World::lights_for`): 0 for the
     /// scene's lights, another for a light group's.
     pub light_set: u32,
@@ -111,6 +114,7 @@ impl Leaf {
             inverse,
             transmits: material.transmits,
             uses_uv: material.uses_uv,
+            uses_facing: material.uses_facing,
             material,
             face_materials: Box::new([]),
             light_set: 0,
@@ -149,22 +153,34 @@ impl Leaf {
     pub fn set_face_materials(&mut self, materials: Vec<Arc<Material>>) {
         self.transmits |= materials.iter().any(|m| m.transmits);
         self.uses_uv |= materials.iter().any(|m| m.uses_uv);
+        self.uses_facing |= materials.iter().any(|m| m.uses_facing);
         self.face_materials = materials.into();
     }
 
-    /// Where the textures are evaluated at a point of the surface: the shape gives its uv
-    /// coordinates when a pattern needs them.
-    pub fn texture_point(&self, p: DVec3, part: u32) -> TexturePoint {
-        if !self.uses_uv {
-            return TexturePoint::in_space(p);
+    /// Where the textures are evaluated at a point of the surface that `ray` reached: the
+    /// shape gives its uv coordinates, and its normal turned towards the ray, when a
+    /// pattern needs them.
+    pub fn texture_point(&self, p: DVec3, part: u32, ray: &Ray) -> TexturePoint {
+        let mut at = TexturePoint::in_space(p);
+        if self.uses_uv
+            && let Shape::Mesh(mesh) = &self.shape
+        {
+            at.uv = mesh.uv(self.local_point(p), part);
         }
-        match &self.shape {
-            Shape::Mesh(mesh) => TexturePoint {
-                world: p,
-                uv: mesh.uv(self.local_point(p), part),
-            },
-            _ => TexturePoint::in_space(p),
+        if self.uses_facing {
+            let normal = self.normal(p, part);
+            let normal = if normal.dot(ray.direction) > 0.0 {
+                -normal
+            } else {
+                normal
+            };
+            at.facing = Some(Facing {
+                point: p,
+                normal,
+                ray: ray.direction.normalize_or_zero(),
+            });
         }
+        at
     }
 
     /// Calls `f` with each stack of texture layers that colours the point, and its weight:

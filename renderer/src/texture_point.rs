@@ -1,6 +1,8 @@
-//! Where a texture is evaluated on a surface: the point in space, and the surface's own uv
-//! coordinates there for the patterns that are `uv_mapping`.
+//! Where a texture is evaluated on a surface: the point in space, the surface's own uv
+//! coordinates there for the patterns that are `uv_mapping`, and how the surface faces
+//! the ray for the patterns that look at it (`slope`, `aoi`).
 
+use analysis::pattern::Facing;
 use analysis::scene::Pattern;
 use glam::{DVec2, DVec3};
 
@@ -10,6 +12,9 @@ pub struct TexturePoint {
     pub world: DVec3,
     /// The surface's uv coordinates, where uv-mapped patterns are evaluated (at u, v, 0).
     pub uv: DVec2,
+    /// The surface's normal and the ray, found only for materials with a pattern that
+    /// looks at them.
+    pub facing: Option<Facing>,
 }
 
 impl TexturePoint {
@@ -19,6 +24,7 @@ impl TexturePoint {
         TexturePoint {
             world,
             uv: world.truncate(),
+            facing: None,
         }
     }
 
@@ -28,10 +34,19 @@ impl TexturePoint {
         if pattern.uv_mapping {
             TexturePoint {
                 world: self.uv.extend(0.0),
-                uv: self.uv,
+                ..*self
             }
         } else {
             *self
+        }
+    }
+
+    /// The point with the normal a layer's bumps turned the surface's to, for the
+    /// patterns that look at it.
+    pub fn with_normal(&self, normal: DVec3) -> TexturePoint {
+        TexturePoint {
+            facing: self.facing.map(|f| Facing { normal, ..f }),
+            ..*self
         }
     }
 }

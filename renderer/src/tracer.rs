@@ -203,7 +203,7 @@ impl<'w> Tracer<'w> {
         let p = ray.at(hit.t);
         let leaf: &'w Leaf = hit.leaf;
         // A texture map shades each texture it blends and mixes the results.
-        let at = leaf.texture_point(p, hit.part);
+        let at = leaf.texture_point(p, hit.part, ray);
         let mut total = Sample::default();
         if !self.world.quality.lighting {
             // Quality levels 0 and 1 show the top pigment under full ambient light: no
@@ -271,12 +271,15 @@ impl<'w> Tracer<'w> {
             if let Some(bumps) = &layer.normal
                 && world.quality.normals
             {
-                normal = crate::normal::perturb(bumps, p, normal);
+                normal = crate::normal::perturb(bumps, p, normal, at.facing.as_ref());
             }
             if i == 0 {
                 top_normal = normal;
             }
-            let pigment = layer.pigment.colour_at(at);
+            let pigment = match at.facing {
+                Some(_) => layer.pigment.colour_at(&at.with_normal(normal)),
+                None => layer.pigment.colour_at(at),
+            };
             let finish = &*layer.finish;
             let opacity = if world.legacy_opacity {
                 1.0 - (pigment.filter * pigment.rgb.max_element() + pigment.transmit)
@@ -647,7 +650,7 @@ impl<'w> Tracer<'w> {
                 return DVec3::ZERO;
             }
             let point = q.ray.at(hit.t);
-            colour *= leaf.transmitted_at(&leaf.texture_point(point, hit.part), hit.part);
+            colour *= leaf.transmitted_at(&leaf.texture_point(point, hit.part, &q.ray), hit.part);
             let interior: &'w Interior = &leaf.interior;
             match inside.iter().position(|i| std::ptr::eq(*i, interior)) {
                 Some(at) => {

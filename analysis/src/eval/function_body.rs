@@ -8,7 +8,7 @@ use super::value::Terms;
 use super::value::Value;
 use super::{Evaluator, Result};
 use crate::function::{Body, Function, Internal, MAX_STACK, Op, Unary};
-use crate::scene::Pigment;
+use crate::scene::{PatternKind, Pigment};
 use crate::spline::Spline;
 use std::sync::Arc;
 use syntax::SyntaxKind::*;
@@ -121,6 +121,16 @@ impl Evaluator<'_> {
     fn special_function_body(&mut self, first: &Token) -> Result<Option<Body>> {
         let body = match first.kind {
             PATTERN_KW => match self.pigment_body()? {
+                // POV-Ray refuses the patterns that need a surface here, though a pigment
+                // function takes them (and gives their value off a surface).
+                Pigment::Pattern { pattern, .. }
+                    if matches!(pattern.kind, PatternKind::Slope(_) | PatternKind::Aoi) =>
+                {
+                    return Err(self.error_at(
+                        first,
+                        "slope and aoi need a surface: they cannot be used in function { pattern { } }",
+                    ));
+                }
                 Pigment::Pattern { pattern, .. } => Body::Pattern(pattern),
                 Pigment::Solid(_) | Pigment::Image(_) => {
                     return Err(

@@ -1,10 +1,10 @@
 //! Patterns whose heads carry more than a keyword and a few numbers: `object { }` (an
-//! object and, after it, the two entries), `facets` and its parameters.
+//! object and, after it, the two entries), `facets` and its parameters, `slope { }`.
 
 use super::tokens::Token;
 use super::value::Value;
 use super::{Evaluator, Result};
-use crate::scene::{Pattern, PatternKind};
+use crate::scene::{Altitude, Pattern, PatternKind, Slope, SlopeTarget};
 use syntax::SyntaxKind::*;
 
 impl Evaluator<'_> {
@@ -38,6 +38,8 @@ impl Evaluator<'_> {
                 PatternKind::Object(test)
             }
             PIGMENT_PATTERN_KW => PatternKind::PigmentPattern(Box::new(self.pigment_body()?)),
+            SLOPE_KW => PatternKind::Slope(Box::new(self.slope(keyword)?)),
+            AOI_KW => PatternKind::Aoi,
             FACETS_KW => PatternKind::Facets {
                 coords: 0.0,
                 size: 0.1,
@@ -45,6 +47,87 @@ impl Evaluator<'_> {
             },
             _ => return Ok(None),
         }))
+    }
+
+    /// The rest of `slope <Direction>`, `slope { <Direction> [, Lo, Hi] [altitude
+    /// <Altitude> [, Lo, Hi]] }` or `slope { point_at <Point> [, Lo, Hi] }`.
+    fn slope(&mut self, keyword: &Token) -> Result<Slope> {
+        if !self.eat(L_BRACE)? {
+            let direction = self.vector()?;
+            return self.slope_towards(keyword, direction, None, None);
+        }
+        let first = self.next()?;
+        if first.kind == POINT_AT_KW {
+            let at = self.vector()?;
+            let range = self.opt_slope_range()?;
+            let token = self.next()?;
+            if token.kind == ALTITUDE_KW {
+                return Err(self.error_at(
+                    &token,
+                    "altitude cannot be used with point_at in a slope pattern",
+                ));
+            }
+            self.unget(token);
+            self.expect(R_BRACE, "'}'")?;
+            return Ok(Slope {
+                towards: SlopeTarget::Point(at),
+                weight: 1.0,
+                range,
+                altitude: None,
+            });
+        }
+        self.unget(first);
+        let direction = self.vector()?;
+        let range = self.opt_slope_range()?;
+        let altitude = if self.eat(ALTITUDE_KW)? {
+            let axis = self.vector()?;
+            Some((axis, self.opt_slope_range()?))
+        } else {
+            None
+        };
+        self.expect(R_BRACE, "'}'")?;
+        self.slope_towards(keyword, direction, range, altitude)
+    }
+
+    /// `, Lo, Hi` after a slope's direction or altitude, if it is there; two equal values
+    /// count as none, as in POV-Ray.
+    fn opt_slope_range(&mut self) -> Result<Option<(f64, f64)>> {
+        if !self.eat(COMMA)? {
+            return Ok(None);
+        }
+        let lo = self.float()?;
+        self.expect(COMMA, "','")?;
+        let hi = self.float()?;
+        Ok((lo != hi).then_some((lo, hi)))
+    }
+
+    fn slope_towards(
+        &mut self,
+        keyword: &Token,
+        direction: glam::DVec3,
+        range: Option<(f64, f64)>,
+        altitude: Option<(glam::DVec3, Option<(f64, f64)>)>,
+    ) -> Result<Slope> {
+        let altitude = altitude
+            .filter(|(axis, _)| axis.length() > 0.0)
+            .map(|(axis, range)| Altitude {
+                axis: axis.normalize(),
+                weight: axis.length(),
+                range: range.unwrap_or((0.0, 1.0)),
+            });
+        let weight = direction.length();
+        if weight == 0.0 && altitude.is_none() {
+            return Err(self.error_at(
+                keyword,
+                "a slope pattern needs a direction or an altitude that is not zero",
+            ));
+        }
+        Ok(Slope {
+            towards: SlopeTarget::Direction(direction.normalize_or_zero()),
+            weight,
+            range,
+            altitude,
+        })
     }
 
     /// A parameter of a pattern kept here, after the pattern's head; false when `token` is
@@ -119,5 +202,54 @@ mod tests {
                   |                        ^~~~~~
         "#]]
         .assert_eq(&syntax::diagnostic::render_human(&errors, &evaluation.sources));
+    }
+
+    /// The pattern of the first object's plain pigment in `text`.
+    fn first_pattern(text: &str) -> crate::scene::Pattern {
+        let files = MemoryFiles::new().with("scene.pov", text);
+        let scene = evaluate("scene.pov", &files, &EvalOptions::default())
+            .scene
+            .expect("the scene evaluates");
+        let texture = scene.objects[0].texture.clone().expect("a texture");
+        let crate::scene::Texture::Plain { pigment, .. } = &*texture else {
+            panic!("not plain")
+        };
+        let crate::scene::Pigment::Pattern { pattern, .. } = pigment else {
+            panic!("not a pattern")
+        };
+        crate::scene::Pattern::clone(pattern)
+    }
+
+    #[test]
+    fn slope_reads_its_direction_ranges_and_altitude() {
+        use crate::scene::{Altitude, PatternKind, Slope, SlopeTarget};
+        let slope = |body: &str| match first_pattern(&format!(
+            "plane {{ y, 0 pigment {{ slope {body} }} }}"
+        ))
+        .kind
+        {
+            PatternKind::Slope(s) => *s,
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(
+            slope("{ 2*y, 0.2, 0.7 altitude 3*x, -1, 1 }"),
+            Slope {
+                towards: SlopeTarget::Direction(DVec3::Y),
+                weight: 2.0,
+                range: Some((0.2, 0.7)),
+                altitude: Some(Altitude {
+                    axis: DVec3::X,
+                    weight: 3.0,
+                    range: (-1.0, 1.0),
+                }),
+            }
+        );
+        // Without braces, a direction alone; equal ends and a zero altitude count as none.
+        let plain = slope("<0, 0, 3>");
+        assert_eq!(plain.towards, SlopeTarget::Direction(DVec3::Z));
+        assert_eq!(slope("{ 3*z, 0.5, 0.5 altitude 0 }"), plain);
+        let at = slope("{ point_at <1, 2, 3>, 0, 0.5 }");
+        assert_eq!(at.towards, SlopeTarget::Point(DVec3::new(1.0, 2.0, 3.0)));
+        assert_eq!(at.range, Some((0.0, 0.5)));
     }
 }

@@ -1242,6 +1242,7 @@ pub fn pattern_keyword(kind: SyntaxKind) -> bool {
     matches!(
         kind,
         AGATE_KW
+            | AOI_KW
             | AVERAGE_KW
             | BOXED_KW
             | BOZO_KW

@@ -8,6 +8,7 @@
 pub mod bitmap;
 mod blocks;
 pub mod cells;
+pub mod facing;
 mod fractal;
 mod spiral;
 pub mod tiling;
@@ -19,6 +20,7 @@ use crate::scene::{Colour, Pattern, PatternKind, Pigment, WaveType};
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
+pub use facing::Facing;
 pub use spiral::quilt_offset;
 
 /// What a pattern gives at a point.
@@ -225,14 +227,22 @@ pub fn default_colours(kind: &PatternKind) -> Vec<(f64, Colour)> {
     }
 }
 
-/// The pattern's value at a world point.
-pub fn evaluate(pattern: &Pattern, world: DVec3) -> PatternValue {
-    evaluate_local(pattern, pattern.transform.inverse.transform_point3(world))
+/// Whether the pattern depends on how the surface faces (`slope`, `aoi`), so that its
+/// value needs a [`Facing`].
+pub fn uses_facing(pattern: &Pattern) -> bool {
+    matches!(pattern.kind, PatternKind::Slope(_) | PatternKind::Aoi)
 }
 
-/// The pattern's value at a point already in pattern space (before warps).
-pub fn evaluate_local(pattern: &Pattern, local: DVec3) -> PatternValue {
-    evaluate_warped(pattern, warped(pattern, local))
+/// The pattern's value at a world point off any surface.
+pub fn evaluate(pattern: &Pattern, world: DVec3) -> PatternValue {
+    evaluate_on(pattern, world, None)
+}
+
+/// The pattern's value at a world point, on the surface `facing` describes if there is
+/// one (which only `slope` and `aoi` look at).
+pub fn evaluate_on(pattern: &Pattern, world: DVec3, facing: Option<&Facing>) -> PatternValue {
+    let local = pattern.transform.inverse.transform_point3(world);
+    evaluate_warped(pattern, warped(pattern, local), facing)
 }
 
 /// A point of pattern space carried through the pattern's warps, the last written first.
@@ -245,7 +255,7 @@ pub fn warped(pattern: &Pattern, local: DVec3) -> DVec3 {
 }
 
 /// The pattern's value at a point that has been through its warps already.
-pub fn evaluate_warped(pattern: &Pattern, p: DVec3) -> PatternValue {
+pub fn evaluate_warped(pattern: &Pattern, p: DVec3, facing: Option<&Facing>) -> PatternValue {
     let classic = pattern.turbulence.as_ref();
     let turbulent = |p: DVec3| match classic {
         Some(t) => p + warp::displacement(t, p),
@@ -291,6 +301,8 @@ pub fn evaluate_warped(pattern: &Pattern, p: DVec3) -> PatternValue {
         }
         PatternKind::Ripples => waves::ripples(turbulent(p), pattern.frequency, pattern.phase),
         PatternKind::Waves => waves::waves(turbulent(p), pattern.frequency, pattern.phase),
+        PatternKind::Slope(slope) => facing::slope(slope, facing, turbulent(p)),
+        PatternKind::Aoi => facing::aoi(facing),
         kind => blend_value(kind, turbulent(p)),
     };
     PatternValue::Blend(shape(pattern, raw))

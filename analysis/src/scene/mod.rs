@@ -28,8 +28,8 @@ pub use photons::{
 };
 pub use settings::{GlobalSettings, Radiosity, Subsurface};
 pub use texture::{
-    BlendMap, Finish, Fractal, FractalKind, Normal, NormalKind, Pattern, PatternKind, Pigment,
-    Reflection, Texture, Turbulence, Warp, WaveType,
+    Altitude, BlendMap, Finish, Fractal, FractalKind, Normal, NormalKind, Pattern, PatternKind,
+    Pigment, Reflection, Slope, SlopeTarget, Texture, Turbulence, Warp, WaveType,
 };
 pub use transform::Transform;
 

@@ -133,6 +133,47 @@ pub enum PatternKind {
     Fractal(Box<Fractal>),
     /// `image_pattern { }`, and the heights of a `bump_map`.
     Image(Box<super::bitmap::ImagePattern>),
+    /// `slope { }`: which way the surface faces, optionally blended with a gradient.
+    Slope(Box<Slope>),
+    /// `aoi`: the angle between the ray and the surface normal.
+    Aoi,
+}
+
+/// The parameters of `slope { <Direction> [, Lo, Hi] [altitude <Altitude> [, Lo, Hi]] }`
+/// and `slope { point_at <Point> [, Lo, Hi] }`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Slope {
+    /// What the surface's normal is compared with.
+    pub towards: SlopeTarget,
+    /// The slope term's weight against the altitude's: the length of `<Direction>` (1 for
+    /// `point_at`).
+    pub weight: f64,
+    /// The slope values that map to 0 and 1; `None` when the scene gives none or two
+    /// equal ones, which POV-Ray takes as the plain slope.
+    pub range: Option<(f64, f64)>,
+    /// The gradient blended in by `altitude`, if its vector is not zero.
+    pub altitude: Option<Altitude>,
+}
+
+/// What a slope pattern compares the surface's normal with.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SlopeTarget {
+    /// A unit direction, or zero when only the altitude counts.
+    Direction(DVec3),
+    /// `point_at`: the direction from the surface point to this world point.
+    Point(DVec3),
+}
+
+/// The gradient term of a slope pattern.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Altitude {
+    /// The unit direction of the gradient, in pattern space.
+    pub axis: DVec3,
+    /// The length of `<Altitude>`.
+    pub weight: f64,
+    /// The heights along `axis` that map to 0 and 1 (0 and 1 unless the scene gives two
+    /// different ones).
+    pub range: (f64, f64),
 }
 
 /// The parameters of the fractal patterns.
