@@ -373,6 +373,8 @@ define_kinds! {
     NORMAL_MAP_KW => "normal_map",
     NORMAL_VECTORS_KW => "normal_vectors",
     NOW_KW => "now",
+    NUMBER_OF_SIDES_KW => "number_of_sides",
+    NUMBER_OF_TILES_KW => "number_of_tiles",
     NUMBER_OF_WAVES_KW => "number_of_waves",
     OBJECT_KW => "object",
     OCTAVES_KW => "octaves",

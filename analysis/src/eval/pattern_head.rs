@@ -1,10 +1,11 @@
 //! Patterns whose heads carry more than a keyword and a few numbers: `object { }` (an
-//! object and, after it, the two entries), `facets` and its parameters, `slope { }`.
+//! object and, after it, the two entries), `facets` and its parameters, `slope { }`,
+//! `pavement` and its parameters.
 
 use super::tokens::Token;
 use super::value::Value;
 use super::{Evaluator, Result};
-use crate::scene::{Altitude, Pattern, PatternKind, Slope, SlopeTarget};
+use crate::scene::{Altitude, Pattern, PatternKind, Pavement, Slope, SlopeTarget};
 use syntax::SyntaxKind::*;
 
 impl Evaluator<'_> {
@@ -40,6 +41,11 @@ impl Evaluator<'_> {
             PIGMENT_PATTERN_KW => PatternKind::PigmentPattern(Box::new(self.pigment_body()?)),
             SLOPE_KW => PatternKind::Slope(Box::new(self.slope(keyword)?)),
             AOI_KW => PatternKind::Aoi,
+            PAVEMENT_KW => PatternKind::Pavement(Pavement {
+                sides: 3,
+                tiles: 1,
+                pattern: 1,
+            }),
             FACETS_KW => PatternKind::Facets {
                 coords: 0.0,
                 size: 0.1,
@@ -47,6 +53,38 @@ impl Evaluator<'_> {
             },
             _ => return Ok(None),
         }))
+    }
+
+    /// A parameter of `pavement`; false when `token` is not one. Whether the pattern
+    /// number exists for the cells and tiles is known only once all are read, and is
+    /// checked with the pattern (`pattern::check`).
+    fn pavement_parameter(&mut self, pavement: &mut Pavement, token: &Token) -> Result<bool> {
+        let (low, high, what) = match token.kind {
+            NUMBER_OF_SIDES_KW => (3, 6, "number_of_sides of pavement must be 3, 4 or 6"),
+            NUMBER_OF_TILES_KW => (1, 6, "number_of_tiles of pavement must be from 1 to 6"),
+            PATTERN_KW => (1, 35, "pattern of pavement must be from 1 to 35"),
+            FORM_KW | EXTERIOR_KW | INTERIOR_KW => {
+                // POV-Ray's default corners are 0; the others are not drawn yet.
+                let look = self.int()?;
+                if look != 0 {
+                    let feature = format!("pavement {} {look}", self.text(token));
+                    return Err(self.unsupported(token, &feature));
+                }
+                return Ok(true);
+            }
+            _ => return Ok(false),
+        };
+        let value = self.int()?;
+        if !(low..=high).contains(&value) || (token.kind == NUMBER_OF_SIDES_KW && value == 5) {
+            return Err(self.error_at(token, what));
+        }
+        let value = value as u8;
+        match token.kind {
+            NUMBER_OF_SIDES_KW => pavement.sides = value,
+            NUMBER_OF_TILES_KW => pavement.tiles = value,
+            _ => pavement.pattern = value,
+        }
+        Ok(true)
     }
 
     /// The rest of `slope <Direction>`, `slope { <Direction> [, Lo, Hi] [altitude
@@ -137,6 +175,9 @@ impl Evaluator<'_> {
         pattern: &mut Pattern,
         token: &Token,
     ) -> Result<bool> {
+        if let PatternKind::Pavement(pavement) = &mut pattern.kind {
+            return self.pavement_parameter(pavement, token);
+        }
         if let PatternKind::Facets {
             coords,
             size,

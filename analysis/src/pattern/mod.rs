@@ -10,6 +10,7 @@ mod blocks;
 pub mod cells;
 pub mod facing;
 mod fractal;
+pub mod pavement;
 mod spiral;
 pub mod tiling;
 pub mod warp;
@@ -39,6 +40,7 @@ pub fn check(pattern: &Pattern) -> Result<(), String> {
         PatternKind::Facets { .. } => {
             return Err("the facets pattern can only be used in a normal".into());
         }
+        PatternKind::Pavement(pavement) => return pavement::check(pavement),
         _ => {}
     }
     if let PatternKind::Function(f) = &pattern.kind
@@ -361,6 +363,7 @@ fn blend_value(kind: &PatternKind, p: DVec3) -> f64 {
         PatternKind::Function(f) => f.eval(&[p.x, p.y, p.z]),
         PatternKind::Image(image) => bitmap::image_value(image, p),
         PatternKind::Tiling(number) => tiling::value(*number, p),
+        PatternKind::Pavement(pavement) => pavement::value(pavement, p),
         _ => 0.0,
     }
 }

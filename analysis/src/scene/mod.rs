@@ -29,7 +29,7 @@ pub use photons::{
 pub use settings::{GlobalSettings, Radiosity, Subsurface};
 pub use texture::{
     Altitude, BlendMap, Finish, Fractal, FractalKind, Normal, NormalKind, Pattern, PatternKind,
-    Pigment, Reflection, Slope, SlopeTarget, Texture, Turbulence, Warp, WaveType,
+    Pavement, Pigment, Reflection, Slope, SlopeTarget, Texture, Turbulence, Warp, WaveType,
 };
 pub use transform::Transform;
 

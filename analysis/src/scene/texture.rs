@@ -137,6 +137,17 @@ pub enum PatternKind {
     Slope(Box<Slope>),
     /// `aoi`: the angle between the ray and the surface normal.
     Aoi,
+    /// `pavement`: the x-z plane paved with one polyform tile.
+    Pavement(Pavement),
+}
+
+/// The tile of a `pavement`: `number_of_sides` of its cells (3, 4 or 6),
+/// `number_of_tiles` (the cells in a tile, 1 to 6) and which `pattern` of those.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Pavement {
+    pub sides: u8,
+    pub tiles: u8,
+    pub pattern: u8,
 }
 
 /// The parameters of `slope { <Direction> [, Lo, Hi] [altitude <Altitude> [, Lo, Hi]] }`

@@ -1,0 +1,375 @@
+//! `pavement`: the x-z plane paved with copies of one polyform, a tile made of equal
+//! cells (unit triangles, unit squares or hexagons of side 1), valued 1 on the tile's
+//! edges and falling linearly to 0 a ramp width inside (half a unit for squares, the
+//! triangle's inradius √3/6 for the others).
+//!
+//! The layouts are data, in `pavements.txt`, measured on POV-Ray 3.7: each edge of the
+//! cell lattice is a tile edge where POV-Ray's value at its midpoint is 1 (inside a tile
+//! it is 0 there), and each layout is stored over its period. The ramp near a corner was
+//! fitted to POV-Ray's values (to 1e-6, at random points of every layout) with the
+//! default `form`, `exterior` and `interior` 0: at a corner of the tile, bounded by the
+//! two tile edges that meet there, the distance is the smaller of the distances to the
+//! two edge lines where the tile's angle is under 180 degrees (a pointed corner), and
+//! where it is over, the largest of the distances to the lattice lines through the corner
+//! (so that the ramp turns sharp corners round a notch too, a hexagon's round the tip of
+//! a 60 degree notch).
+//!
+//! Cells are found through the triangle lattice's vertices `(i + k/2, k √3/2)` (indices
+//! `(i, k)`), or the square lattice's `(i, k)`; a hexagon is the six triangles round a
+//! vertex whose `i - k` is 1 modulo 3, so that the hexagon of side 1 centred at (1, 0)
+//! has its corners at (0, 0) and (2, 0), as in POV-Ray.
+
+use crate::scene::Pavement;
+use glam::{DVec2, DVec3};
+use std::sync::OnceLock;
+
+/// How many patterns POV-Ray has for each number of tiles (1 to 6), by cell.
+const TRIANGLE_PATTERNS: [u8; 6] = [1, 1, 1, 3, 4, 12];
+const SQUARE_PATTERNS: [u8; 6] = [1, 1, 2, 5, 12, 35];
+const HEXAGON_PATTERNS: [u8; 5] = [1, 1, 3, 7, 22];
+
+/// How many patterns there are for tiles of `tiles` cells with `sides` sides; 0 for a
+/// combination POV-Ray does not have.
+pub fn pattern_count(sides: u8, tiles: u8) -> u8 {
+    let counts: &[u8] = match sides {
+        3 => &TRIANGLE_PATTERNS,
+        4 => &SQUARE_PATTERNS,
+        6 => &HEXAGON_PATTERNS,
+        _ => &[],
+    };
+    counts
+        .get(usize::from(tiles).wrapping_sub(1))
+        .copied()
+        .unwrap_or(0)
+}
+
+/// Whether the pavement's combination exists; `Err` says what is wrong, in POV-Ray's
+/// terms.
+pub fn check(pavement: &Pavement) -> Result<(), String> {
+    let Pavement {
+        sides,
+        tiles,
+        pattern,
+    } = *pavement;
+    if sides == 6 && tiles == 6 {
+        return Err("pavement: number_of_tiles must be from 1 to 5 for hexagons".into());
+    }
+    let count = pattern_count(sides, tiles);
+    if !(1..=count).contains(&pattern) {
+        return Err(format!(
+            "pavement: pattern {pattern} is out of range for number_of_sides {sides} \
+             number_of_tiles {tiles} (1 to {count})"
+        ));
+    }
+    Ok(())
+}
+
+const ROOT3_2: f64 = 0.866_025_403_784_438_6;
+
+/// The cells' lattice.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Lattice {
+    Square,
+    Triangle,
+    Hexagon,
+}
+
+impl Lattice {
+    /// The lattice directions round a vertex, counterclockwise from +x, as index steps.
+    fn steps(self) -> &'static [(i32, i32)] {
+        match self {
+            Lattice::Square => &[(1, 0), (0, 1), (-1, 0), (0, -1)],
+            Lattice::Triangle | Lattice::Hexagon => {
+                &[(1, 0), (0, 1), (-1, 1), (-1, 0), (0, -1), (1, -1)]
+            }
+        }
+    }
+
+    fn position(self, (i, k): (i32, i32)) -> DVec2 {
+        match self {
+            Lattice::Square => DVec2::new(f64::from(i), f64::from(k)),
+            _ => DVec2::new(f64::from(i) + 0.5 * f64::from(k), ROOT3_2 * f64::from(k)),
+        }
+    }
+
+    /// The corners of the cell holding `q`, counterclockwise, as lattice indices, and
+    /// how many there are.
+    fn cell(self, q: DVec2) -> ([(i32, i32); 6], usize) {
+        let mut corners = [(0, 0); 6];
+        if self == Lattice::Square {
+            let (i, k) = (q.x.floor() as i32, q.y.floor() as i32);
+            corners[..4].copy_from_slice(&[(i, k), (i + 1, k), (i + 1, k + 1), (i, k + 1)]);
+            return (corners, 4);
+        }
+        let b = q.y / ROOT3_2;
+        let a = q.x - 0.5 * b;
+        let (i, k) = (a.floor() as i32, b.floor() as i32);
+        let triangle = if (a - a.floor()) + (b - b.floor()) < 1.0 {
+            [(i, k), (i + 1, k), (i, k + 1)]
+        } else {
+            [(i + 1, k), (i + 1, k + 1), (i, k + 1)]
+        };
+        if self == Lattice::Triangle {
+            corners[..3].copy_from_slice(&triangle);
+            return (corners, 3);
+        }
+        // Of a triangle's three corners, one each has `i - k` 0, 1 and 2 modulo 3.
+        let (ci, ck) = triangle
+            .into_iter()
+            .find(|(i, k)| (i - k).rem_euclid(3) == 1)
+            .unwrap_or(triangle[0]);
+        for (corner, (di, dk)) in corners.iter_mut().zip(self.steps()) {
+            *corner = (ci + di, ck + dk);
+        }
+        (corners, 6)
+    }
+}
+
+/// One layout over its period: which lattice edges are tile edges.
+struct Layout {
+    lattice: Lattice,
+    /// The period in lattice indices along i and along k.
+    period: (i32, i32),
+    /// For each edge class (the first half of the lattice directions), one flag per
+    /// vertex of the period, k major.
+    edges: Vec<Vec<bool>>,
+}
+
+impl Layout {
+    /// Whether the edge from vertex `v` in lattice direction `d` is a tile edge.
+    fn is_edge(&self, (i, k): (i32, i32), d: usize) -> bool {
+        let steps = self.lattice.steps();
+        let half = steps.len() / 2;
+        let (class, (i, k)) = if d < half {
+            (d, (i, k))
+        } else {
+            let (di, dk) = steps[d];
+            (d - half, (i + di, k + dk))
+        };
+        let (p, q) = self.period;
+        self.edges[class][(k.rem_euclid(q) * p + i.rem_euclid(p)) as usize]
+    }
+
+    /// The lattice direction from vertex `from` to the neighbouring vertex `to`.
+    fn direction(&self, from: (i32, i32), to: (i32, i32)) -> usize {
+        let step = (to.0 - from.0, to.1 - from.1);
+        self.lattice
+            .steps()
+            .iter()
+            .position(|s| *s == step)
+            .unwrap_or(0)
+    }
+
+    /// The distance from `q` to the tile's edges as the ramp counts it, where it is
+    /// under `reach`.
+    fn distance(&self, q: DVec2, reach: f64) -> f64 {
+        let (corners, count) = self.lattice.cell(q);
+        let corners = &corners[..count];
+        let steps = self.lattice.steps();
+        let unit = |d: usize| {
+            let (di, dk) = steps[d];
+            (self.lattice.position((di, dk)) - self.lattice.position((0, 0))).normalize()
+        };
+        let mut nearest = reach;
+        for (n, &corner) in corners.iter().enumerate() {
+            let next = corners[(n + 1) % corners.len()];
+            let at = self.lattice.position(corner);
+            let d = self.direction(corner, next);
+            if self.is_edge(corner, d) {
+                nearest = nearest.min(unit(d).perp_dot(q - at).abs());
+            }
+            // The tile's corner at this vertex, if one is there: the tile edges either
+            // side of the sector that holds `q`.
+            let count = steps.len();
+            let offset = q - at;
+            let angle = offset.y.atan2(offset.x).rem_euclid(std::f64::consts::TAU);
+            let sector = ((angle / std::f64::consts::TAU * count as f64) as usize).min(count - 1);
+            let Some(up) = (1..=count).find(|m| self.is_edge(corner, (sector + m) % count)) else {
+                continue;
+            };
+            let down = (0..count)
+                .find(|m| self.is_edge(corner, (sector + count - m) % count))
+                .unwrap_or(count - up);
+            let (a, b) = ((sector + up) % count, (sector + count - down) % count);
+            let to_a = unit(a).perp_dot(offset).abs();
+            let to_b = unit(b).perp_dot(offset).abs();
+            // The tile's angle here, in sectors: twice the sectors is the full turn.
+            let sectors = up + down;
+            let corner_distance = match (2 * sectors).cmp(&count) {
+                std::cmp::Ordering::Less => to_a.min(to_b),
+                std::cmp::Ordering::Equal => to_a,
+                // Round a notch, the farthest of the lattice lines through the vertex.
+                std::cmp::Ordering::Greater => (0..count / 2)
+                    .map(|d| unit(d).perp_dot(offset).abs())
+                    .fold(0.0, f64::max),
+            };
+            nearest = nearest.min(corner_distance);
+        }
+        nearest
+    }
+}
+
+fn layouts() -> &'static [Layout] {
+    static LAYOUTS: OnceLock<Vec<Layout>> = OnceLock::new();
+    LAYOUTS.get_or_init(|| read_layouts(include_str!("pavements.txt")))
+}
+
+/// The layouts in `text`, in the order it gives them: squares, triangles, then hexagons,
+/// each by number of tiles and pattern. The text is ours and fixed (a test reads it all),
+/// so a malformed line is a bug, not an input error.
+fn read_layouts(text: &str) -> Vec<Layout> {
+    text.lines()
+        .filter(|l| l.starts_with("pavement "))
+        .map(|line| {
+            let mut parts = line.split('|');
+            let head: Vec<i32> = parts
+                .next()
+                .unwrap_or("")
+                .split_whitespace()
+                .filter_map(|w| w.parse().ok())
+                .collect();
+            let [sides, _, _, p, q] = head[..] else {
+                panic!("pavements.txt: `pavement S T P period I K` expected: {line}");
+            };
+            let lattice = match sides {
+                3 => Lattice::Triangle,
+                4 => Lattice::Square,
+                _ => Lattice::Hexagon,
+            };
+            let edges = parts
+                .map(|bits| bits.trim().chars().map(|c| c == '1').collect::<Vec<_>>())
+                .collect::<Vec<_>>();
+            assert!(
+                edges.len() == lattice.steps().len() / 2
+                    && edges.iter().all(|e| e.len() == (p * q) as usize),
+                "pavements.txt: wrong edge flags: {line}"
+            );
+            Layout {
+                lattice,
+                period: (p, q),
+                edges,
+            }
+        })
+        .collect()
+}
+
+/// Where a combination's layout is in the table.
+fn index(pavement: &Pavement) -> usize {
+    let before = |counts: &[u8]| counts.iter().map(|&c| usize::from(c)).sum::<usize>();
+    let (start, counts): (usize, &[u8]) = match pavement.sides {
+        4 => (0, &SQUARE_PATTERNS),
+        3 => (before(&SQUARE_PATTERNS), &TRIANGLE_PATTERNS),
+        _ => (
+            before(&SQUARE_PATTERNS) + before(&TRIANGLE_PATTERNS),
+            &HEXAGON_PATTERNS,
+        ),
+    };
+    let tiles = usize::from(pavement.tiles).clamp(1, counts.len());
+    start + before(&counts[..tiles - 1]) + usize::from(pavement.pattern).max(1) - 1
+}
+
+/// The value of the pavement at `p` (y is ignored), in 0..=1. The combination must pass
+/// `check`.
+pub fn value(pavement: &Pavement, p: DVec3) -> f64 {
+    let layout = &layouts()[index(pavement)];
+    let ramp = if layout.lattice == Lattice::Square {
+        0.5
+    } else {
+        ROOT3_2 / 3.0
+    };
+    1.0 - layout.distance(DVec2::new(p.x, p.z), ramp) / ramp
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn at(sides: u8, tiles: u8, pattern: u8, x: f64, z: f64) -> f64 {
+        let pavement = Pavement {
+            sides,
+            tiles,
+            pattern,
+        };
+        value(&pavement, DVec3::new(x, 3.0, z))
+    }
+
+    /// `number_of_sides`, `number_of_tiles` and `pattern`.
+    type Combination = (u8, u8, u8);
+    /// A point's x and z, and POV-Ray's value there.
+    type Sample = (f64, f64, f64);
+
+    /// Values POV-Ray 3.7 gives at random points (read through a `color_map { [0 rgb 0]
+    /// [1 rgb 1] }` pigment function and `#write`), for layouts of every cell and size.
+    #[test]
+    fn values_match_povrays() {
+        #[rustfmt::skip]
+        let cases: [(Combination, [Sample; 4]); 10] = [
+            ((4, 1, 1), [(-3.714, -0.007, 0.9860000), (1.015, -4.713, 0.9700000), (-3.521, 4.282, 0.4360000), (-4.296, -3.702, 0.4080000)]),
+            ((4, 4, 5), [(4.483, 1.219, 0.5620000), (-1.31, 0.114, 0.7720000), (1.628, -2.247, 0.5060000), (-3.62, 2.88, 0.2400000)]),
+            ((4, 5, 7), [(1.704, 0.124, 0.7520000), (3.167, 0.491, 0.0180000), (4.809, -2.955, 0.9100000), (0.537, -0.164, 0.0740000)]),
+            ((4, 6, 34), [(-1.467, 0.916, 0.0660000), (-2.647, 3.022, 0.9560000), (3.673, -3.712, 0.3460000), (-0.329, -2.229, 0.5420000)]),
+            ((3, 1, 1), [(-4.169, 3.959, 0.6498109), (-0.701, -3.523, 0.7959700), (1.734, -2.978, 0.9560473), (4.014, -2.829, 0.2000565)]),
+            ((3, 4, 2), [(-4.669, -2.992, 0.0000000), (-1.543, -0.311, 0.1676678), (4.061, 1.974, 0.1618634), (-1.607, -4.831, 0.0000000)]),
+            ((3, 6, 12), [(-3.402, 4.964, 0.1958004), (-0.403, 1.91, 0.3835659), (-4.453, -4.659, 0.5713753), (3.459, 0.879, 0.8994727)]),
+            ((6, 1, 1), [(-1.913, -1.826, 0.0000000), (-4.108, -3.273, 0.9930023), (-4.754, 3.391, 0.0000000), (-0.337, -3.728, 0.0858292)]),
+            ((6, 3, 2), [(2.392, -3.043, 0.0000000), (-4.381, 0.984, 0.8473380), (3.958, -4.731, 0.0000000), (3.051, -3.098, 0.5188934)]),
+            ((6, 5, 22), [(-4.071, -4.82, 0.5614849), (-2.07, 2.271, 0.0000000), (-0.068, 3.529, 0.7751854), (-2.828, -1.848, 0.6848299)]),
+        ];
+        for ((sides, tiles, pattern), points) in cases {
+            for (x, z, povray) in points {
+                let ours = at(sides, tiles, pattern, x, z);
+                assert!(
+                    (ours - povray).abs() < 1e-6,
+                    "pavement {sides} {tiles} {pattern} at ({x}, {z}): {ours} is not {povray}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn the_table_has_every_combination() {
+        let layouts = read_layouts(include_str!("pavements.txt"));
+        let total: usize = [&TRIANGLE_PATTERNS[..], &SQUARE_PATTERNS, &HEXAGON_PATTERNS]
+            .iter()
+            .flat_map(|c| c.iter())
+            .map(|&c| usize::from(c))
+            .sum();
+        assert_eq!(layouts.len(), total);
+        // Every combination finds its own line.
+        let text = include_str!("pavements.txt");
+        for sides in [3, 4, 6] {
+            for tiles in 1..=6 {
+                for pattern in 1..=pattern_count(sides, tiles) {
+                    let pavement = Pavement {
+                        sides,
+                        tiles,
+                        pattern,
+                    };
+                    assert!(check(&pavement).is_ok());
+                    let line = text
+                        .lines()
+                        .filter(|l| l.starts_with("pavement "))
+                        .nth(index(&pavement));
+                    let head = format!("pavement {sides} {tiles} {pattern} ");
+                    assert!(line.is_some_and(|l| l.starts_with(&head)), "{head}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn combinations_povray_lacks_are_refused() {
+        let refused = |sides, tiles, pattern| {
+            check(&Pavement {
+                sides,
+                tiles,
+                pattern,
+            })
+            .is_err()
+        };
+        assert!(refused(6, 6, 1));
+        assert!(refused(4, 3, 3));
+        assert!(refused(3, 4, 0));
+        assert!(!refused(4, 6, 35));
+    }
+}

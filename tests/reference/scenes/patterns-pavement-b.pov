@@ -1,0 +1,31 @@
+// Pattern fidelity: pavement with triangular and hexagonal cells, polyiamonds and
+// polyhexes of each size, each on a box face with the pattern's x-z plane turned to face
+// the camera, and a colour map that shows the ramp from the tiles' edges (1) to their
+// insides (0).
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+background { color rgb 0.1 }
+camera { orthographic location <0, 0, -10> look_at 0 right 16*x up 12*y }
+light_source { <0, 0, -100> color rgb 1 }
+#declare M = color_map {
+  [0 rgb <0.1, 0.2, 0.5>] [0.4 rgb <0.2, 0.6, 0.4>] [0.8 rgb <0.95, 0.85, 0.4>] [1 rgb <0.9, 0.2, 0.1>]
+}
+#declare F = finish { ambient 0.3 diffuse 0.7 }
+#macro Tile(X, Y, N, T, P, S)
+  box { <-1.9, -1.9, 0>, <1.9, 1.9, 1>
+    pigment { pavement number_of_sides N number_of_tiles T pattern P color_map { M }
+      scale S rotate x*-90 translate <0.13, 0.07, 0> }
+    finish { F } translate <X, Y, 0> }
+#end
+Tile(-6,  4, 3, 1,  1, 0.6)
+Tile(-2,  4, 3, 3,  1, 0.5)
+Tile( 2,  4, 3, 4,  2, 0.5)
+Tile( 6,  4, 3, 5,  4, 0.4)
+Tile(-6,  0, 3, 6,  7, 0.4)
+Tile(-2,  0, 3, 6, 12, 0.4)
+Tile( 2,  0, 6, 1,  1, 0.4)
+Tile( 6,  0, 6, 2,  1, 0.35)
+Tile(-6, -4, 6, 3,  2, 0.3)
+Tile(-2, -4, 6, 4,  6, 0.25)
+Tile( 2, -4, 6, 5,  2, 0.2)
+Tile( 6, -4, 6, 5, 14, 0.2)
