@@ -277,7 +277,10 @@ pub fn value(pavement: &Pavement, p: DVec3) -> f64 {
     } else {
         ROOT3_2 / 3.0
     };
-    1.0 - layout.distance(DVec2::new(p.x, p.z), ramp) / ramp
+    // Far out (where no float resolves a cell any more) the point is held where the
+    // lattice indices and their neighbours stay within i32.
+    let q = DVec2::new(p.x, p.z).clamp(DVec2::splat(-1e8), DVec2::splat(1e8));
+    1.0 - layout.distance(q, ramp) / ramp
 }
 
 #[cfg(test)]
@@ -353,6 +356,16 @@ mod tests {
                     let head = format!("pavement {sides} {tiles} {pattern} ");
                     assert!(line.is_some_and(|l| l.starts_with(&head)), "{head}");
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn far_and_undefined_points_give_a_value() {
+        for (x, z) in [(1e300, -1e300), (f64::NAN, 0.5), (f64::INFINITY, 3.0)] {
+            for (sides, tiles, pattern) in [(3, 6, 12), (4, 6, 35), (6, 5, 22)] {
+                let v = at(sides, tiles, pattern, x, z);
+                assert!(v.is_nan() || (0.0..=1.0).contains(&v), "{v}");
             }
         }
     }
