@@ -19,38 +19,68 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
     if x.is_nan() || x.abs() > REDUCTION_LIMIT {
         return (x.sin(), x.cos());
     }
-    // The nearest quarter turn; `floor` is one WebAssembly instruction where `f64::round`
-    // takes several. Halves may go either way: the remainder stays within π/4,
-    // give or take an ulp, where the series below is as accurate.
+    let (quarter, r) = reduce(x);
+    let (s, c) = (sine_series(r), cosine_series(r));
+    match quarter {
+        0 => (s, c),
+        1 => (c, -s),
+        2 => (-s, -c),
+        _ => (-c, s),
+    }
+}
+
+/// sin(x) alone, the very value [`sin_cos`] gives, for half the series.
+#[inline]
+pub fn sin(x: f64) -> f64 {
+    if x.is_nan() || x.abs() > REDUCTION_LIMIT {
+        return x.sin();
+    }
+    let (quarter, r) = reduce(x);
+    let value = if quarter & 1 == 0 {
+        sine_series(r)
+    } else {
+        cosine_series(r)
+    };
+    if quarter & 2 == 0 { value } else { -value }
+}
+
+/// The nearest quarter turn to `x` (modulo 4) and the remainder beyond it. `floor` is one
+/// WebAssembly instruction where `f64::round` takes several. Halves may go either way:
+/// the remainder stays within π/4, give or take an ulp, where the series are as accurate.
+#[inline(always)]
+fn reduce(x: f64) -> (i64, f64) {
     let k = (x * FRAC_2_PI + 0.5).floor();
     let r = ((x - k * PIO2_HIGH) - k * PIO2_MID) - k * PIO2_LOW;
+    ((k as i64) & 3, r)
+}
+
+/// Taylor series to the 15th power: on |r| <= π/4 the first omitted term is below 1e-16
+/// of the result.
+#[inline(always)]
+fn sine_series(r: f64) -> f64 {
     let r2 = r * r;
-    // Taylor series to the 15th and 16th powers: on |r| <= π/4 the first omitted terms are
-    // below 1e-16 of the result.
-    let s = r
-        * (1.0
-            + r2 * (-1.0 / 6.0
-                + r2 * (1.0 / 120.0
-                    + r2 * (-1.0 / 5040.0
-                        + r2 * (1.0 / 362_880.0
-                            + r2 * (-1.0 / 39_916_800.0
-                                + r2 * (1.0 / 6_227_020_800.0
-                                    + r2 * (-1.0 / 1_307_674_368_000.0))))))));
-    let c = 1.0
-        + r2 * (-0.5
+    r * (1.0
+        + r2 * (-1.0 / 6.0
+            + r2 * (1.0 / 120.0
+                + r2 * (-1.0 / 5040.0
+                    + r2 * (1.0 / 362_880.0
+                        + r2 * (-1.0 / 39_916_800.0
+                            + r2 * (1.0 / 6_227_020_800.0 + r2 * (-1.0 / 1_307_674_368_000.0))))))))
+}
+
+/// Taylor series to the 16th power, as accurate as [`sine_series`].
+#[inline(always)]
+fn cosine_series(r: f64) -> f64 {
+    let r2 = r * r;
+    1.0 + r2
+        * (-0.5
             + r2 * (1.0 / 24.0
                 + r2 * (-1.0 / 720.0
                     + r2 * (1.0 / 40_320.0
                         + r2 * (-1.0 / 3_628_800.0
                             + r2 * (1.0 / 479_001_600.0
                                 + r2 * (-1.0 / 87_178_291_200.0
-                                    + r2 * (1.0 / 20_922_789_888_000.0))))))));
-    match (k as i64) & 3 {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    }
+                                    + r2 * (1.0 / 20_922_789_888_000.0))))))))
 }
 
 #[cfg(test)]
@@ -74,6 +104,12 @@ mod tests {
                 "{x}"
             );
         }
+        let mut x = -300.0;
+        while x < 300.0 {
+            assert_eq!(sin(x), sin_cos(x).0, "{x}");
+            x += 0.0731;
+        }
+        assert_eq!(sin(4e5), 4e5f64.sin());
         let (s, c) = sin_cos(f64::NAN);
         assert!(s.is_nan() && c.is_nan());
         let (s, c) = sin_cos(f64::INFINITY);

@@ -50,7 +50,7 @@ fn each_source(
             l => l,
         };
         let k = if own { *own_frequency } else { 1.0 };
-        let sine = trig::sin_cos((length * frequency * k + phase) * TAU).0;
+        let sine = trig::sin((length * frequency * k + phase) * TAU);
         f(d, length, sine, 1.0 / k);
     }
 }
