@@ -24,6 +24,14 @@ impl<'w> Inside<'w> {
         self.band = None;
     }
 
+    /// Becomes a copy of `saved`, keeping its own storage: a ray's state is restored after
+    /// every refraction, and a fresh copy would allocate each time.
+    pub fn restore(&mut self, saved: &Inside<'w>) {
+        self.interiors.clear();
+        self.interiors.extend_from_slice(&saved.interiors);
+        self.band = saved.band;
+    }
+
     /// The interiors, innermost last.
     pub fn interiors(&self) -> &[&'w Interior] {
         &self.interiors

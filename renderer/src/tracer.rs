@@ -739,12 +739,12 @@ impl<'w> Tracer<'w> {
                 )
             }
             None => {
-                self.inside = saved.clone();
+                self.inside.restore(&saved);
                 let reflected = self.reflect(ray, p, normal, level, weight);
                 (Sample::new(reflected, 0.0), true)
             }
         };
-        self.inside = saved;
+        self.inside.restore(&saved);
         result
     }
 
