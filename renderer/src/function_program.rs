@@ -266,6 +266,13 @@ struct Builder {
 
 impl Builder {
     fn push(&mut self, node: Node) -> u32 {
+        let node = match self.merged_scales(&node) {
+            Some((x, k)) => {
+                let k = self.push(Node::Const(k));
+                Node::Binary(Binary::Mul, x, k)
+            }
+            None => node,
+        };
         let node = self.fold(node);
         let key = match &node {
             Node::Const(v) => Some(Key::Const(v.to_bits())),
@@ -316,6 +323,35 @@ impl Builder {
             Node::Const(v) => Some(v),
             _ => None,
         }
+    }
+
+    /// `(x·k1)·k2` or `(x·k1)/k2` as x·k with k = k1·k2 or k1/k2, when k2 is a power of two:
+    /// scaling by it rounds nothing (short of leaving the range of floats), so the one
+    /// product is the two.
+    fn merged_scales(&self, node: &Node) -> Option<(u32, f64)> {
+        let Node::Binary(op @ (Binary::Mul | Binary::Div), a, b) = *node else {
+            return None;
+        };
+        let (inner, k2) = match (self.constant(a), self.constant(b)) {
+            (_, Some(k)) => (a, k),
+            (Some(k), None) if op == Binary::Mul => (b, k),
+            _ => return None,
+        };
+        let Node::Binary(Binary::Mul, x, y) = self.nodes[inner as usize] else {
+            return None;
+        };
+        let (x, k1) = match (self.constant(x), self.constant(y)) {
+            (_, Some(k)) => (x, k),
+            (Some(k), None) => (y, k),
+            _ => return None,
+        };
+        let scale = exact_reciprocal(k2)?;
+        let k = if op == Binary::Mul {
+            k1 / scale
+        } else {
+            k1 * scale
+        };
+        k.is_normal().then_some((x, k))
     }
 
     /// Replaces a node whose operands are all constants by its value.
@@ -980,6 +1016,26 @@ mod tests {
     fn assert_count(program: &Program, pick: fn(&Inst) -> bool, want: usize) {
         let got = program.code.iter().filter(|i| pick(i)).count();
         assert_eq!(got, want, "{:#?}", program.code);
+    }
+
+    #[test]
+    fn scales_by_powers_of_two_merge_into_one_product() {
+        // (x·0.32)/16 + (y·3)·0.25 + (z·0.3)·3: four products of six, as 3 is no power of
+        // two.
+        let scaled = |param: u8, k1: f64, op: Op, k2: f64| {
+            [Op::Param(param), Op::Const(k1), Op::Mul, Op::Const(k2), op]
+        };
+        let mut ops = scaled(0, 0.32, Op::Div, 16.0).to_vec();
+        ops.extend(scaled(1, 3.0, Op::Mul, 0.25));
+        ops.push(Op::Add);
+        ops.extend(scaled(2, 0.3, Op::Mul, 3.0));
+        ops.push(Op::Add);
+        let f = code(&["x", "y", "z"], ops);
+        let program = Program::compile(&f, 3).unwrap();
+        for p in [[0.3, -1.2, 2.5], [1e-3, 7.0, -4.0], [-7.5, 3.3, 1e5]] {
+            assert_eq!(f.eval(&p), program.eval(&p), "{p:?}");
+        }
+        assert_count(&program, |i| matches!(i, Inst::MulK(..)), 4);
     }
 
     #[test]
