@@ -121,17 +121,12 @@ impl Evaluator<'_> {
     fn special_function_body(&mut self, first: &Token) -> Result<Option<Body>> {
         let body = match first.kind {
             PATTERN_KW => match self.pigment_body()? {
-                // POV-Ray refuses the patterns that need a surface here, though a pigment
-                // function takes them (and gives their value off a surface).
-                Pigment::Pattern { pattern, .. }
-                    if matches!(pattern.kind, PatternKind::Slope(_) | PatternKind::Aoi) =>
-                {
-                    return Err(self.error_at(
-                        first,
-                        "slope and aoi need a surface: they cannot be used in function { pattern { } }",
-                    ));
+                Pigment::Pattern { pattern, .. } => {
+                    if let Some(refusal) = refused_in_functions(&pattern.kind) {
+                        return Err(self.error_at(first, refusal));
+                    }
+                    Body::Pattern(pattern)
                 }
-                Pigment::Pattern { pattern, .. } => Body::Pattern(pattern),
                 Pigment::Solid(_) | Pigment::Image(_) => {
                     return Err(
                         self.error_at(first, "expected a pattern in function { pattern { } }")
@@ -527,4 +522,27 @@ fn emit(code: &mut Vec<Op>, op: Op) {
         code.truncate(n - arity);
         code.push(Op::Const(value));
     }
+}
+
+/// Why POV-Ray 3.7 refuses a pattern in `function { pattern { } }`, though a pigment
+/// function takes it: slope and aoi need a surface; the others are not among the patterns
+/// its function parser knows ("No matching } in 'pattern'").
+fn refused_in_functions(kind: &PatternKind) -> Option<String> {
+    let name = match kind {
+        PatternKind::Slope(_) | PatternKind::Aoi => {
+            return Some(
+                "slope and aoi need a surface: they cannot be used in function { pattern { } }"
+                    .into(),
+            );
+        }
+        PatternKind::Average => "average",
+        PatternKind::Square => "square",
+        PatternKind::Triangular => "triangular",
+        PatternKind::Tiling(_) => "tiling",
+        PatternKind::Pavement(_) => "pavement",
+        _ => return None,
+    };
+    Some(format!(
+        "the {name} pattern cannot be used in function {{ pattern {{ }} }}, as in POV-Ray 3.7"
+    ))
 }
