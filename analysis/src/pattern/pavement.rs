@@ -75,6 +75,32 @@ enum Lattice {
 }
 
 impl Lattice {
+    /// The signed distances of a point at `o` from a vertex to the lattice lines through
+    /// it, one per direction of the first half of `steps` (positive to the left of it).
+    fn across(self, o: DVec2) -> [f64; 3] {
+        match self {
+            Lattice::Square => [o.y, -o.x, 0.0],
+            Lattice::Triangle | Lattice::Hexagon => {
+                [o.y, 0.5 * o.y - ROOT3_2 * o.x, -0.5 * o.y - ROOT3_2 * o.x]
+            }
+        }
+    }
+
+    /// The sector round a vertex that holds a point, from its signed distances to the
+    /// lattice lines (`across`): sector `s` lies between directions `s` and `s + 1`.
+    fn sector(self, [c0, c1, c2]: [f64; 3]) -> usize {
+        match (self, c0 >= 0.0) {
+            (Lattice::Square, true) => usize::from(c1 >= 0.0),
+            (Lattice::Square, false) => 2 + usize::from(c1 <= 0.0),
+            (_, true) if c1 < 0.0 => 0,
+            (_, true) if c2 < 0.0 => 1,
+            (_, true) => 2,
+            (_, false) if c1 > 0.0 => 3,
+            (_, false) if c2 > 0.0 => 4,
+            (_, false) => 5,
+        }
+    }
+
     /// The lattice directions round a vertex, counterclockwise from +x, as index steps.
     fn steps(self) -> &'static [(i32, i32)] {
         match self {
@@ -130,24 +156,47 @@ struct Layout {
     lattice: Lattice,
     /// The period in lattice indices along i and along k.
     period: (i32, i32),
-    /// For each edge class (the first half of the lattice directions), one flag per
-    /// vertex of the period, k major.
-    edges: Vec<Vec<bool>>,
+    /// For each vertex of the period, k major, the lattice directions (bit `d` for
+    /// direction `d`) in which a tile edge leaves it.
+    masks: Vec<u8>,
 }
 
 impl Layout {
-    /// Whether the edge from vertex `v` in lattice direction `d` is a tile edge.
-    fn is_edge(&self, (i, k): (i32, i32), d: usize) -> bool {
-        let steps = self.lattice.steps();
+    /// The layout whose edge flags are given per edge class (the first half of the
+    /// lattice directions), one per vertex of the period, k major.
+    fn new(lattice: Lattice, period: (i32, i32), edges: &[Vec<bool>]) -> Layout {
+        let (p, q) = period;
+        let steps = lattice.steps();
         let half = steps.len() / 2;
-        let (class, (i, k)) = if d < half {
-            (d, (i, k))
-        } else {
-            let (di, dk) = steps[d];
-            (d - half, (i + di, k + dk))
+        let flag = |class: usize, (i, k): (i32, i32)| {
+            edges[class][(k.rem_euclid(q) * p + i.rem_euclid(p)) as usize]
         };
+        let masks = (0..q)
+            .flat_map(|k| (0..p).map(move |i| (i, k)))
+            .map(|(i, k)| {
+                (0..steps.len())
+                    .filter(|&d| {
+                        if d < half {
+                            flag(d, (i, k))
+                        } else {
+                            let (di, dk) = steps[d];
+                            flag(d - half, (i + di, k + dk))
+                        }
+                    })
+                    .fold(0u8, |mask, d| mask | 1 << d)
+            })
+            .collect();
+        Layout {
+            lattice,
+            period,
+            masks,
+        }
+    }
+
+    /// The directions in which tile edges leave vertex `(i, k)`, as bits.
+    fn mask(&self, (i, k): (i32, i32)) -> u8 {
         let (p, q) = self.period;
-        self.edges[class][(k.rem_euclid(q) * p + i.rem_euclid(p)) as usize]
+        self.masks[(k.rem_euclid(q) * p + i.rem_euclid(p)) as usize]
     }
 
     /// The lattice direction from vertex `from` to the neighbouring vertex `to`.
@@ -165,43 +214,42 @@ impl Layout {
     fn distance(&self, q: DVec2, reach: f64) -> f64 {
         let (corners, count) = self.lattice.cell(q);
         let corners = &corners[..count];
-        let steps = self.lattice.steps();
-        let unit = |d: usize| {
-            let (di, dk) = steps[d];
-            (self.lattice.position((di, dk)) - self.lattice.position((0, 0))).normalize()
-        };
+        let count = self.lattice.steps().len();
         let mut nearest = reach;
         for (n, &corner) in corners.iter().enumerate() {
+            let mask = self.mask(corner);
+            // No tile edge leaves this vertex: no cell edge and no tile corner here.
+            if mask == 0 {
+                continue;
+            }
+            let is_edge = |d: usize| mask >> d & 1 != 0;
             let next = corners[(n + 1) % corners.len()];
             let at = self.lattice.position(corner);
-            let d = self.direction(corner, next);
-            if self.is_edge(corner, d) {
-                nearest = nearest.min(unit(d).perp_dot(q - at).abs());
-            }
-            // The tile's corner at this vertex, if one is there: the tile edges either
-            // side of the sector that holds `q`.
-            let count = steps.len();
             let offset = q - at;
-            let angle = offset.y.atan2(offset.x).rem_euclid(std::f64::consts::TAU);
-            let sector = ((angle / std::f64::consts::TAU * count as f64) as usize).min(count - 1);
-            let Some(up) = (1..=count).find(|m| self.is_edge(corner, (sector + m) % count)) else {
-                continue;
-            };
+            let across = self.lattice.across(offset);
+            let line = |d: usize| across[d % (count / 2)].abs();
+            let d = self.direction(corner, next);
+            if is_edge(d) {
+                nearest = nearest.min(line(d));
+            }
+            // The tile's corner at this vertex: the tile edges either side of the sector
+            // that holds `q`.
+            let sector = self.lattice.sector(across);
+            let up = (1..=count)
+                .find(|m| is_edge((sector + m) % count))
+                .unwrap_or(count);
             let down = (0..count)
-                .find(|m| self.is_edge(corner, (sector + count - m) % count))
+                .find(|m| is_edge((sector + count - m) % count))
                 .unwrap_or(count - up);
             let (a, b) = ((sector + up) % count, (sector + count - down) % count);
-            let to_a = unit(a).perp_dot(offset).abs();
-            let to_b = unit(b).perp_dot(offset).abs();
+            let (to_a, to_b) = (line(a), line(b));
             // The tile's angle here, in sectors: twice the sectors is the full turn.
             let sectors = up + down;
             let corner_distance = match (2 * sectors).cmp(&count) {
                 std::cmp::Ordering::Less => to_a.min(to_b),
                 std::cmp::Ordering::Equal => to_a,
                 // Round a notch, the farthest of the lattice lines through the vertex.
-                std::cmp::Ordering::Greater => (0..count / 2)
-                    .map(|d| unit(d).perp_dot(offset).abs())
-                    .fold(0.0, f64::max),
+                std::cmp::Ordering::Greater => (0..count / 2).map(line).fold(0.0, f64::max),
             };
             nearest = nearest.min(corner_distance);
         }
@@ -244,11 +292,7 @@ fn read_layouts(text: &str) -> Vec<Layout> {
                     && edges.iter().all(|e| e.len() == (p * q) as usize),
                 "pavements.txt: wrong edge flags: {line}"
             );
-            Layout {
-                lattice,
-                period: (p, q),
-                edges,
-            }
+            Layout::new(lattice, (p, q), &edges)
         })
         .collect()
 }
