@@ -46,8 +46,11 @@ impl Evaluator<'_> {
         let at = self.next()?;
         self.unget(at.clone());
         let name = self.string()?;
-        // Without a type POV-Ray expects its output type, PNG unless told otherwise.
-        let format = format.unwrap_or(ImageFormat::Png);
+        // Without a type POV-Ray 3.7 goes by the name's extension; without a known one it
+        // expects its output type, PNG unless told otherwise.
+        let format = format
+            .or_else(|| ImageFormat::from_extension(&name))
+            .unwrap_or(ImageFormat::Png);
         let image = self.load_image(format, &name, &at)?;
         let mut gamma = None;
         loop {
@@ -377,6 +380,16 @@ mod tests {
             error(&scene("jpeg \"map.png\""), files.clone()),
             "not supported yet: jpeg images 40..49 []"
         );
+        // Without a type keyword the extension names the format, as in POV-Ray 3.7: a PNG
+        // under another name is read as that format, not as PNG.
+        let mut renamed = files.clone();
+        renamed.insert_bytes("photo.jpg", PIXEL);
+        renamed.insert_bytes("map.gif", PIXEL);
+        assert_eq!(
+            error(&scene("\"photo.jpg\""), renamed.clone()),
+            "not supported yet: jpeg images 35..46 []"
+        );
+        assert!(error(&scene("\"map.gif\""), renamed).starts_with("cannot read 'map.gif'"));
         assert_eq!(
             error(&scene("png \"map.png\" map_type 3"), files),
             "not supported yet: map_type 3 58..59 []"

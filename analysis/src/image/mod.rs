@@ -49,6 +49,26 @@ impl ImageFormat {
         }
     }
 
+    /// The format a file name's extension names (`.jpg`, `.tif`, `.png`, ...), which is
+    /// how POV-Ray 3.7 reads a file given without a type keyword.
+    pub fn from_extension(name: &str) -> Option<ImageFormat> {
+        let extension = std::path::Path::new(name).extension()?.to_str()?;
+        Some(match extension.to_ascii_lowercase().as_str() {
+            "png" => ImageFormat::Png,
+            "gif" => ImageFormat::Gif,
+            "tga" => ImageFormat::Tga,
+            "ppm" => ImageFormat::Ppm,
+            "pgm" => ImageFormat::Pgm,
+            "jpg" | "jpeg" => ImageFormat::Jpeg,
+            "tif" | "tiff" => ImageFormat::Tiff,
+            "exr" => ImageFormat::Exr,
+            "hdr" => ImageFormat::Hdr,
+            "iff" => ImageFormat::Iff,
+            "sys" => ImageFormat::Sys,
+            _ => return None,
+        })
+    }
+
     /// The usual file name extension, which POV-Ray appends to a name that has none.
     pub fn extension(self) -> &'static str {
         match self {
