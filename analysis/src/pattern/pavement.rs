@@ -118,26 +118,26 @@ impl Lattice {
         }
     }
 
-    /// The corners of the cell holding `q`, counterclockwise, as lattice indices, and
-    /// how many there are.
-    fn cell(self, q: DVec2) -> ([(i32, i32); 6], usize) {
+    /// The corners of the cell holding `q`, counterclockwise, as lattice indices, the
+    /// lattice direction from each corner to the next, and how many corners there are.
+    fn cell(self, q: DVec2) -> ([(i32, i32); 6], [u8; 6], usize) {
         let mut corners = [(0, 0); 6];
         if self == Lattice::Square {
             let (i, k) = (q.x.floor() as i32, q.y.floor() as i32);
             corners[..4].copy_from_slice(&[(i, k), (i + 1, k), (i + 1, k + 1), (i, k + 1)]);
-            return (corners, 4);
+            return (corners, [0, 1, 2, 3, 0, 0], 4);
         }
         let b = q.y / ROOT3_2;
         let a = q.x - 0.5 * b;
         let (i, k) = (a.floor() as i32, b.floor() as i32);
-        let triangle = if (a - a.floor()) + (b - b.floor()) < 1.0 {
-            [(i, k), (i + 1, k), (i, k + 1)]
+        let (triangle, directions) = if (a - a.floor()) + (b - b.floor()) < 1.0 {
+            ([(i, k), (i + 1, k), (i, k + 1)], [0, 2, 4, 0, 0, 0])
         } else {
-            [(i + 1, k), (i + 1, k + 1), (i, k + 1)]
+            ([(i + 1, k), (i + 1, k + 1), (i, k + 1)], [1, 3, 5, 0, 0, 0])
         };
         if self == Lattice::Triangle {
             corners[..3].copy_from_slice(&triangle);
-            return (corners, 3);
+            return (corners, directions, 3);
         }
         // Of a triangle's three corners, one each has `i - k` 0, 1 and 2 modulo 3.
         let (ci, ck) = triangle
@@ -147,7 +147,7 @@ impl Lattice {
         for (corner, (di, dk)) in corners.iter_mut().zip(self.steps()) {
             *corner = (ci + di, ck + dk);
         }
-        (corners, 6)
+        (corners, [2, 3, 4, 5, 0, 1], 6)
     }
 }
 
@@ -159,6 +159,40 @@ struct Layout {
     /// For each vertex of the period, k major, the lattice directions (bit `d` for
     /// direction `d`) in which a tile edge leaves it.
     masks: Vec<u8>,
+    /// The corner rule for each mask of tile edges and each sector round the vertex,
+    /// worked out once: a point's value needs one per corner of its cell.
+    rules: Vec<[CornerRule; 6]>,
+}
+
+/// How the ramp goes round the tile's corner at a vertex, for a point in one sector round
+/// it: the tile edges either side of the sector, and the tile's angle there against a
+/// half turn.
+#[derive(Debug, Clone, Copy)]
+struct CornerRule {
+    a: u8,
+    b: u8,
+    angle: std::cmp::Ordering,
+}
+
+impl CornerRule {
+    /// The rule at a vertex whose tile edges leave in the directions `mask` holds, of
+    /// `count` lattice directions, for a point in `sector`.
+    fn new(count: usize, mask: u8, sector: usize) -> CornerRule {
+        let is_edge = |d: usize| mask >> d & 1 != 0;
+        let up = (1..=count)
+            .find(|m| is_edge((sector + m) % count))
+            .unwrap_or(count);
+        let down = (0..count)
+            .find(|m| is_edge((sector + count - m) % count))
+            .unwrap_or(count - up);
+        // The tile's angle here, in sectors: twice the sectors is the full turn.
+        let sectors = up + down;
+        CornerRule {
+            a: ((sector + up) % count) as u8,
+            b: ((sector + count - down) % count) as u8,
+            angle: (2 * sectors).cmp(&count),
+        }
+    }
 }
 
 impl Layout {
@@ -186,10 +220,15 @@ impl Layout {
                     .fold(0u8, |mask, d| mask | 1 << d)
             })
             .collect();
+        let count = steps.len();
+        let rules = (0..1u16 << count)
+            .map(|mask| std::array::from_fn(|sector| CornerRule::new(count, mask as u8, sector)))
+            .collect();
         Layout {
             lattice,
             period,
             masks,
+            rules,
         }
     }
 
@@ -199,20 +238,10 @@ impl Layout {
         self.masks[(k.rem_euclid(q) * p + i.rem_euclid(p)) as usize]
     }
 
-    /// The lattice direction from vertex `from` to the neighbouring vertex `to`.
-    fn direction(&self, from: (i32, i32), to: (i32, i32)) -> usize {
-        let step = (to.0 - from.0, to.1 - from.1);
-        self.lattice
-            .steps()
-            .iter()
-            .position(|s| *s == step)
-            .unwrap_or(0)
-    }
-
     /// The distance from `q` to the tile's edges as the ramp counts it, where it is
     /// under `reach`.
     fn distance(&self, q: DVec2, reach: f64) -> f64 {
-        let (corners, count) = self.lattice.cell(q);
+        let (corners, directions, count) = self.lattice.cell(q);
         let corners = &corners[..count];
         let count = self.lattice.steps().len();
         let mut nearest = reach;
@@ -223,29 +252,19 @@ impl Layout {
                 continue;
             }
             let is_edge = |d: usize| mask >> d & 1 != 0;
-            let next = corners[(n + 1) % corners.len()];
             let at = self.lattice.position(corner);
             let offset = q - at;
             let across = self.lattice.across(offset);
             let line = |d: usize| across[d % (count / 2)].abs();
-            let d = self.direction(corner, next);
+            let d = usize::from(directions[n]);
             if is_edge(d) {
                 nearest = nearest.min(line(d));
             }
             // The tile's corner at this vertex: the tile edges either side of the sector
             // that holds `q`.
-            let sector = self.lattice.sector(across);
-            let up = (1..=count)
-                .find(|m| is_edge((sector + m) % count))
-                .unwrap_or(count);
-            let down = (0..count)
-                .find(|m| is_edge((sector + count - m) % count))
-                .unwrap_or(count - up);
-            let (a, b) = ((sector + up) % count, (sector + count - down) % count);
-            let (to_a, to_b) = (line(a), line(b));
-            // The tile's angle here, in sectors: twice the sectors is the full turn.
-            let sectors = up + down;
-            let corner_distance = match (2 * sectors).cmp(&count) {
+            let rule = self.rules[usize::from(mask)][self.lattice.sector(across)];
+            let (to_a, to_b) = (line(usize::from(rule.a)), line(usize::from(rule.b)));
+            let corner_distance = match rule.angle {
                 std::cmp::Ordering::Less => to_a.min(to_b),
                 std::cmp::Ordering::Equal => to_a,
                 // Round a notch, the farthest of the lattice lines through the vertex.
@@ -299,17 +318,27 @@ fn read_layouts(text: &str) -> Vec<Layout> {
 
 /// Where a combination's layout is in the table.
 fn index(pavement: &Pavement) -> usize {
-    let before = |counts: &[u8]| counts.iter().map(|&c| usize::from(c)).sum::<usize>();
     let (start, counts): (usize, &[u8]) = match pavement.sides {
         4 => (0, &SQUARE_PATTERNS),
-        3 => (before(&SQUARE_PATTERNS), &TRIANGLE_PATTERNS),
-        _ => (
-            before(&SQUARE_PATTERNS) + before(&TRIANGLE_PATTERNS),
-            &HEXAGON_PATTERNS,
-        ),
+        3 => (SQUARE_LAYOUTS, &TRIANGLE_PATTERNS),
+        _ => (SQUARE_LAYOUTS + TRIANGLE_LAYOUTS, &HEXAGON_PATTERNS),
     };
     let tiles = usize::from(pavement.tiles).clamp(1, counts.len());
-    start + before(&counts[..tiles - 1]) + usize::from(pavement.pattern).max(1) - 1
+    start + layouts_before(counts, tiles - 1) + usize::from(pavement.pattern).max(1) - 1
+}
+
+const SQUARE_LAYOUTS: usize = layouts_before(&SQUARE_PATTERNS, SQUARE_PATTERNS.len());
+const TRIANGLE_LAYOUTS: usize = layouts_before(&TRIANGLE_PATTERNS, TRIANGLE_PATTERNS.len());
+
+/// How many layouts the first `n` numbers of tiles of `counts` have.
+const fn layouts_before(counts: &[u8], n: usize) -> usize {
+    let mut sum = 0;
+    let mut i = 0;
+    while i < n {
+        sum += counts[i] as usize;
+        i += 1;
+    }
+    sum
 }
 
 /// The value of the pavement at `p` (y is ignored), in 0..=1. The combination must pass
