@@ -31,6 +31,11 @@ impl Aabb {
         self.min.is_finite() && self.max.is_finite()
     }
 
+    /// Whether `other` lies wholly inside this box.
+    pub fn contains(&self, other: &Aabb) -> bool {
+        self.min.cmple(other.min).all() && self.max.cmpge(other.max).all()
+    }
+
     pub fn is_empty(&self) -> bool {
         self.min.x > self.max.x || self.min.y > self.max.y || self.min.z > self.max.z
     }

@@ -222,6 +222,17 @@ impl Leaf {
         total
     }
 
+    /// Whether the leaf's frame keeps the axes' directions (no rotation or shear), so that
+    /// its box is its shape's own box.
+    fn is_upright(&self) -> bool {
+        self.to_local.is_none_or(|m| {
+            let m = m.matrix3;
+            [
+                m.x_axis.y, m.x_axis.z, m.y_axis.x, m.y_axis.z, m.z_axis.x, m.z_axis.y,
+            ] == [0.0; 6]
+        })
+    }
+
     /// Whether this opaque standalone leaf crosses the query's interval.
     pub fn blocks(&self, q: &Query) -> bool {
         self.standalone
@@ -344,9 +355,15 @@ impl Csg {
             CsgKind::Intersection | CsgKind::Clip => children
                 .iter()
                 .skip(first_bound)
-                .position(|o| {
-                    matches!(o, Object::Leaf(l) if !l.inverse
-                        && matches!(l.shape, Shape::Sphere(_) | Shape::Cuboid(_)))
+                .position(|o| match o {
+                    Object::Leaf(l) if !l.inverse => match l.shape {
+                        Shape::Sphere(_) => true,
+                        // An upright box holding the node's own bounds turns away no ray
+                        // that the bounds let through (csg.pov's rounded cube).
+                        Shape::Cuboid(_) => !(l.is_upright() && o.bounds().contains(&bounds)),
+                        _ => false,
+                    },
+                    _ => false,
                 })
                 .map(|i| i + first_bound),
             CsgKind::Union | CsgKind::Merge => None,
@@ -738,6 +755,32 @@ mod tests {
         };
         assert_eq!(clip.kinds() & RayKind::Shadow.bit(), 0);
         assert_ne!(clip.kinds() & RayKind::Primary.bit(), 0);
+    }
+
+    /// A sphere among an intersection's children bounds it, and so does a box turned
+    /// off the axes; an upright box holding the node's bounds adds nothing to them, so
+    /// the next candidate is taken, or none.
+    #[test]
+    fn only_hulls_that_cull_more_than_the_bounds_are_kept() {
+        let hull = |source: &str| {
+            let world = crate::build::world_of_source(source);
+            match world.bvh.objects().next() {
+                Some(Object::Csg(csg)) => csg.hull,
+                _ => panic!("not a CSG node"),
+            }
+        };
+        assert_eq!(
+            hull("intersection { box { -1, 1 } sphere { 0, 1.32 } }"),
+            Some(1)
+        );
+        assert_eq!(
+            hull("intersection { box { -1, 1 rotate 30*y } sphere { 0, 1.32 } }"),
+            Some(0)
+        );
+        assert_eq!(
+            hull("intersection { box { -1, 1 } cylinder { -y, y, 1.2 } }"),
+            None
+        );
     }
 
     /// Scenes hold up to a hundred thousand objects and more; an object stays a few
