@@ -241,8 +241,9 @@ impl Layout {
     /// The distance from `q` to the tile's edges as the ramp counts it, where it is
     /// under `reach`.
     fn distance(&self, q: DVec2, reach: f64) -> f64 {
-        let (corners, directions, count) = self.lattice.cell(q);
-        let corners = &corners[..count];
+        let (corners, directions, corner_count) = self.lattice.cell(q);
+        let corners = &corners[..corner_count];
+        // The lattice directions round a vertex (two per lattice line through it).
         let count = self.lattice.steps().len();
         let mut nearest = reach;
         for (n, &corner) in corners.iter().enumerate() {
@@ -251,13 +252,11 @@ impl Layout {
             if mask == 0 {
                 continue;
             }
-            let is_edge = |d: usize| mask >> d & 1 != 0;
-            let at = self.lattice.position(corner);
-            let offset = q - at;
-            let across = self.lattice.across(offset);
+            let across = self.lattice.across(q - self.lattice.position(corner));
             let line = |d: usize| across[d % (count / 2)].abs();
+            // The cell's own edge from this corner to the next, when it is a tile edge.
             let d = usize::from(directions[n]);
-            if is_edge(d) {
+            if mask >> d & 1 != 0 {
                 nearest = nearest.min(line(d));
             }
             // The tile's corner at this vertex: the tile edges either side of the sector
