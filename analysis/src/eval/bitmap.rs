@@ -376,19 +376,25 @@ mod tests {
             error(&scene("png \"bad.png\""), files.clone())
                 .starts_with("cannot read 'bad.png': not a valid PNG file")
         );
-        assert_eq!(
-            error(&scene("jpeg \"map.png\""), files.clone()),
-            "not supported yet: jpeg images 40..49 []"
+        assert!(
+            error(&scene("jpeg \"map.png\""), files.clone())
+                .starts_with("cannot read 'map.png': not a valid JPEG file")
         );
         // Without a type keyword the extension names the format, as in POV-Ray 3.7: a PNG
         // under another name is read as that format, not as PNG.
         let mut renamed = files.clone();
         renamed.insert_bytes("photo.jpg", PIXEL);
         renamed.insert_bytes("map.gif", PIXEL);
-        assert_eq!(
-            error(&scene("\"photo.jpg\""), renamed.clone()),
-            "not supported yet: jpeg images 35..46 []"
+        assert!(
+            error(&scene("\"photo.jpg\""), renamed.clone())
+                .starts_with("cannot read 'photo.jpg': not a valid JPEG file")
         );
+        renamed.insert_bytes(
+            "real.jpg",
+            &include_bytes!("../image/testdata/colour.jpg")[..],
+        );
+        let jpeg = renamed.clone().with("scene.pov", scene("\"real.jpg\""));
+        assert!(!evaluate("scene.pov", &jpeg, &EvalOptions::default()).has_errors());
         assert!(error(&scene("\"map.gif\""), renamed).starts_with("cannot read 'map.gif'"));
         assert_eq!(
             error(&scene("png \"map.png\" map_type 3"), files),

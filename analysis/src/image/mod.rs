@@ -4,6 +4,7 @@
 //! palette images, and the gamma the file states. Malformed files are errors, never panics.
 
 mod gif;
+mod jpeg;
 mod netpbm;
 mod png;
 mod tga;
@@ -127,6 +128,32 @@ impl Image {
         self.indices.as_ref().map(|i| i[y * self.width + x])
     }
 
+    /// An opaque image without a palette from its samples, normalised to 0..1 and one
+    /// (grey) or three (red, green, blue) per pixel, row by row from the top.
+    fn opaque(width: usize, height: usize, channels: usize, samples: &[f32]) -> Image {
+        let pixels = samples
+            .chunks_exact(channels)
+            .map(|p| match *p {
+                [g] => [g, g, g, 1.0],
+                _ => [p[0], p[1], p[2], 1.0],
+            })
+            .collect();
+        Image {
+            width,
+            height,
+            pixels,
+            indices: None,
+            palette_len: 0,
+            model: if channels == 1 {
+                ColourModel::Grey
+            } else {
+                ColourModel::Rgb
+            },
+            has_alpha: false,
+            gamma: None,
+        }
+    }
+
     /// A copy whose colour samples (not alpha) went through `decode`, as gamma decoding
     /// does before an image map's colours are used.
     pub fn map_colours(&self, decode: impl Fn(f32) -> f32) -> Image {
@@ -164,6 +191,7 @@ pub fn decode(format: ImageFormat, bytes: &[u8]) -> Result<Image, ImageError> {
         ImageFormat::Png => png::decode(bytes)?,
         ImageFormat::Gif => gif::decode(bytes)?,
         ImageFormat::Tga => tga::decode(bytes)?,
+        ImageFormat::Jpeg => jpeg::decode(bytes)?,
         ImageFormat::Ppm | ImageFormat::Pgm => netpbm::decode(bytes)?,
         other => {
             return Err(ImageError::Unsupported(format!(

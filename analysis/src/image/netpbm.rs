@@ -2,7 +2,7 @@
 //! P3) or binary (P5, P6), with 8- or 16-bit samples. A 16-bit PPM, like a TGA, can carry
 //! a height field in its red and green bytes.
 
-use super::{ColourModel, Image, ImageError, check_size};
+use super::{Image, ImageError, check_size};
 
 pub fn decode(bytes: &[u8]) -> Result<Image, ImageError> {
     let malformed = |what: &str| ImageError::Malformed(format!("not a valid PPM/PGM file: {what}"));
@@ -55,31 +55,8 @@ pub fn decode(bytes: &[u8]) -> Result<Image, ImageError> {
         }
     }
     let scale = max as f32;
-    let value = |s: usize| s.min(max) as f32 / scale;
-    let pixels = samples
-        .chunks(channels)
-        .map(|p| {
-            if channels == 1 {
-                [value(p[0]), value(p[0]), value(p[0]), 1.0]
-            } else {
-                [value(p[0]), value(p[1]), value(p[2]), 1.0]
-            }
-        })
-        .collect();
-    Ok(Image {
-        width,
-        height,
-        pixels,
-        indices: None,
-        palette_len: 0,
-        model: if channels == 1 {
-            ColourModel::Grey
-        } else {
-            ColourModel::Rgb
-        },
-        has_alpha: false,
-        gamma: None,
-    })
+    let values: Vec<f32> = samples.iter().map(|&s| s.min(max) as f32 / scale).collect();
+    Ok(Image::opaque(width, height, channels, &values))
 }
 
 /// The next decimal number of the header or of a plain file, skipping whitespace and
@@ -106,6 +83,7 @@ fn number(bytes: &[u8], pos: &mut usize) -> Option<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::image::ColourModel;
 
     #[test]
     fn plain_and_binary_files_decode_alike() {
