@@ -21,6 +21,7 @@ mod media;
 mod normal;
 mod object;
 mod options;
+mod parallel;
 mod photons;
 pub mod pipeline;
 mod png_output;

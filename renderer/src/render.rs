@@ -8,6 +8,7 @@ use crate::camera::Camera;
 use crate::colour::{Curve, EncodeTable, Sample};
 use crate::image::Image;
 use crate::options::{Extent, Gamma, RenderOptions};
+use crate::parallel::map_indices;
 use crate::radiosity;
 use crate::sampling::{self, CompareCurve, Compared, Sampler, Subdivider};
 use crate::tracer::Tracer;
@@ -136,22 +137,9 @@ const SHARED_ROWS: usize = if cfg!(target_arch = "wasm32") {
     8
 };
 
-/// Maps `f` over `0..count`, in parallel where threads exist.
-fn map_rows<T: Send>(count: usize, f: impl Fn(usize) -> T + Sync + Send) -> Vec<T> {
-    #[cfg(not(target_arch = "wasm32"))]
-    {
-        use rayon::prelude::*;
-        (0..count).into_par_iter().map(f).collect()
-    }
-    #[cfg(target_arch = "wasm32")]
-    {
-        (0..count).map(f).collect()
-    }
-}
-
 /// One ray through each pixel centre.
 fn centres(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
-    map_rows((region.y1 - region.y0 + 1) as usize, |row| {
+    map_indices((region.y1 - region.y0 + 1) as usize, |row| {
         let mut tracer = Tracer::new(sampler.world);
         let y = f64::from(region.y0) + row as f64 + 0.5;
         (region.x0..=region.x1)
@@ -164,7 +152,7 @@ fn method1(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
     let centres = centres(sampler, region);
     let rows = centres.len();
     let cols = region.columns();
-    map_rows(rows, |row| {
+    map_indices(rows, |row| {
         let mut tracer = Tracer::new(sampler.world);
         (0..cols)
             .map(|col| {
@@ -198,7 +186,7 @@ fn method3(sampler: &Sampler<'_>, region: &Region, confidence: f64) -> Vec<Vec<S
     let first = centres(sampler, region);
     let rows = first.len();
     let cols = region.columns();
-    map_rows(rows, |row| {
+    map_indices(rows, |row| {
         let mut tracer = Tracer::new(sampler.world);
         (0..cols)
             .map(|col| {
@@ -233,7 +221,7 @@ fn method3(sampler: &Sampler<'_>, region: &Region, confidence: f64) -> Vec<Vec<S
 
 fn method2(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
     let corner_rows = (region.y1 - region.y0 + 2) as usize;
-    let corners: Vec<Vec<Compared>> = map_rows(corner_rows, |row| {
+    let corners: Vec<Vec<Compared>> = map_indices(corner_rows, |row| {
         let mut tracer = Tracer::new(sampler.world);
         let y = f64::from(region.y0) + row as f64;
         (region.x0..=region.x1 + 1)
@@ -243,7 +231,7 @@ fn method2(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
     // Runs of rows share one subdivider, which passes the samples on the edges between
     // them from row to row; the runs are traced in parallel where threads exist.
     let rows = corner_rows - 1;
-    let runs = map_rows(rows.div_ceil(SHARED_ROWS), |run| {
+    let runs = map_indices(rows.div_ceil(SHARED_ROWS), |run| {
         let mut tracer = Tracer::new(sampler.world);
         let mut subdivider = Subdivider::new(sampler.depth, region.columns());
         (run * SHARED_ROWS..(run + 1).saturating_mul(SHARED_ROWS).min(rows))

@@ -12,6 +12,9 @@
 //! Samples live in a loose octree: each in the smallest cell that holds its position and
 //! is at least as wide as its reach, so a lookup visits only the cells whose doubled
 //! extent holds the point.
+//!
+//! Lookups may read several caches as one (the pretrace's units read the samples of the
+//! rounds before theirs and their own, kept apart until the round ends).
 
 use glam::DVec3;
 
@@ -208,42 +211,9 @@ impl Cache {
         }
     }
 
-    /// The samples that may stand in for `(p, n)` under `bound`, blended.
-    pub fn lookup(&self, p: DVec3, n: DVec3, bound: f64) -> Blend {
-        let sums = self.sums(p, n, bound, f64::INFINITY);
-        Blend {
-            irradiance: if sums.weights > 0.0 {
-                sums.light / sums.weights
-            } else {
-                DVec3::ZERO
-            },
-            coverage: sums.coverage,
-        }
-    }
-
-    /// How well the samples cover `(p, n)` under `bound`, as [`Blend::coverage`], counted
-    /// only until it reaches `enough`: for points whose light nobody sees, where only
-    /// whether the coverage reaches a threshold matters, most of the search is saved. The
-    /// samples are met in the order `lookup` meets them, so the coverage is exactly
-    /// `lookup`'s whenever it is below `enough`.
-    pub fn coverage(&self, p: DVec3, n: DVec3, bound: f64, enough: f64) -> f64 {
-        self.sums(p, n, bound, enough).coverage
-    }
-
-    fn sums(&self, p: DVec3, n: DVec3, bound: f64, enough: f64) -> Sums {
-        let mut sums = Sums::default();
-        if self.root != NONE {
-            let stretch = bound / self.reference_bound;
-            let search = Search {
-                p,
-                n,
-                bound,
-                stretch,
-                enough,
-            };
-            self.visit(self.root, &search, &mut sums);
-        }
-        sums
+    /// The samples in the order they were inserted.
+    pub fn samples(&self) -> &[Sample] {
+        &self.samples
     }
 
     /// Adds the samples of cell `at` and its descendants that fit the search to `sums`;
@@ -271,6 +241,49 @@ impl Cache {
                 .iter()
                 .any(|&child| child != NONE && self.visit(child, search, sums))
     }
+}
+
+/// The samples of `layers`, read as one cache, that may stand in for `(p, n)` under
+/// `bound`, blended.
+pub fn lookup(layers: &[&Cache], p: DVec3, n: DVec3, bound: f64) -> Blend {
+    let sums = sums(layers, p, n, bound, f64::INFINITY);
+    Blend {
+        irradiance: if sums.weights > 0.0 {
+            sums.light / sums.weights
+        } else {
+            DVec3::ZERO
+        },
+        coverage: sums.coverage,
+    }
+}
+
+/// How well the samples of `layers` cover `(p, n)` under `bound`, as [`Blend::coverage`],
+/// counted only until it reaches `enough`: for points whose light nobody sees, where only
+/// whether the coverage reaches a threshold matters, most of the search is saved. The
+/// samples are met in the order `lookup` meets them, so the coverage is exactly
+/// `lookup`'s whenever it is below `enough`.
+pub fn coverage(layers: &[&Cache], p: DVec3, n: DVec3, bound: f64, enough: f64) -> f64 {
+    sums(layers, p, n, bound, enough).coverage
+}
+
+fn sums(layers: &[&Cache], p: DVec3, n: DVec3, bound: f64, enough: f64) -> Sums {
+    let mut sums = Sums::default();
+    for cache in layers {
+        if cache.root == NONE {
+            continue;
+        }
+        let search = Search {
+            p,
+            n,
+            bound,
+            stretch: bound / cache.reference_bound,
+            enough,
+        };
+        if cache.visit(cache.root, &search, &mut sums) {
+            break;
+        }
+    }
+    sums
 }
 
 /// What a lookup looks for.
@@ -330,9 +343,9 @@ mod tests {
         let mut cache = Cache::new(1.0);
         cache.insert(sample(0.0, 1.0));
         cache.insert(sample(1.0, 3.0));
-        let halfway = cache.lookup(DVec3::new(0.5, 0.0, 0.0), DVec3::Y, 1.0);
+        let halfway = lookup(&[&cache], DVec3::new(0.5, 0.0, 0.0), DVec3::Y, 1.0);
         assert!((halfway.irradiance.x - 2.0).abs() < 1e-12, "{halfway:?}");
-        let near_first = cache.lookup(DVec3::new(0.2, 0.0, 0.0), DVec3::Y, 1.0);
+        let near_first = lookup(&[&cache], DVec3::new(0.2, 0.0, 0.0), DVec3::Y, 1.0);
         assert!(near_first.irradiance.x < 1.2, "{near_first:?}");
         assert!(near_first.coverage > halfway.coverage / 2.0);
     }
@@ -341,20 +354,15 @@ mod tests {
     fn samples_out_of_reach_turned_away_or_in_front_are_not_used() {
         let mut cache = Cache::new(1.0);
         cache.insert(sample(0.0, 1.0));
-        let far = cache.lookup(DVec3::new(1.5, 0.0, 0.0), DVec3::Y, 1.0);
+        let far = lookup(&[&cache], DVec3::new(1.5, 0.0, 0.0), DVec3::Y, 1.0);
         assert_eq!(far.coverage, 0.0);
-        let turned = cache.lookup(DVec3::new(0.1, 0.0, 0.0), DVec3::X, 1.0);
+        let turned = lookup(&[&cache], DVec3::new(0.1, 0.0, 0.0), DVec3::X, 1.0);
         assert_eq!(turned.coverage, 0.0);
         // A point below the sample's surface, as on a step down from it.
-        let below = cache.lookup(DVec3::new(0.0, -0.3, 0.0), DVec3::Y, 1.0);
+        let below = lookup(&[&cache], DVec3::new(0.0, -0.3, 0.0), DVec3::Y, 1.0);
         assert_eq!(below.coverage, 0.0);
         // A looser bound reaches further.
-        assert!(
-            cache
-                .lookup(DVec3::new(1.5, 0.0, 0.0), DVec3::Y, 2.0)
-                .coverage
-                > 0.0
-        );
+        assert!(lookup(&[&cache], DVec3::new(1.5, 0.0, 0.0), DVec3::Y, 2.0).coverage > 0.0);
     }
 
     #[test]
@@ -376,7 +384,7 @@ mod tests {
         }
         for (i, s) in all.iter().enumerate() {
             let p = s.position + DVec3::new(0.3, 0.0, 0.2) * s.reuse;
-            let found = cache.lookup(p, DVec3::Y, 1.8);
+            let found = lookup(&[&cache], p, DVec3::Y, 1.8);
             let expected: f64 = all
                 .iter()
                 .filter_map(|s| fit(s, p, DVec3::Y, 1.8))
@@ -386,12 +394,52 @@ mod tests {
             assert!((found.coverage - expected).abs() < 1e-9, "sample {i}");
             // A count up to a threshold agrees with the whole count on either side of it.
             for enough in [0.5, 2.0, expected, expected + 1.0] {
-                let counted = cache.coverage(p, DVec3::Y, 1.8, enough);
+                let counted = coverage(&[&cache], p, DVec3::Y, 1.8, enough);
                 assert_eq!(counted >= enough, found.coverage >= enough, "sample {i}");
                 if found.coverage < enough {
                     assert_eq!(counted, found.coverage, "sample {i}");
                 }
             }
         }
+    }
+
+    #[test]
+    fn caches_read_as_one_find_what_one_cache_of_all_their_samples_finds() {
+        let samples: Vec<Sample> = (0..60)
+            .map(|i| {
+                let f = f64::from(i);
+                Sample {
+                    position: DVec3::new((f * 1.7).sin() * 3.0, 0.0, (f * 0.9).cos() * 3.0),
+                    normal: DVec3::Y,
+                    irradiance: DVec3::splat(f),
+                    reuse: 0.5 + (f * 0.3).sin().abs(),
+                }
+            })
+            .collect();
+        let mut all = Cache::new(1.0);
+        let (mut first, mut second) = (Cache::new(1.0), Cache::new(1.0));
+        for (i, s) in samples.iter().enumerate() {
+            all.insert(*s);
+            if i % 3 == 0 {
+                first.insert(*s);
+            } else {
+                second.insert(*s);
+            }
+        }
+        for j in 0..40 {
+            let f = f64::from(j);
+            let p = DVec3::new((f * 2.3).cos() * 3.0, 0.0, (f * 1.1).sin() * 3.0);
+            let whole = lookup(&[&all], p, DVec3::Y, 1.5);
+            let layered = lookup(&[&first, &second], p, DVec3::Y, 1.5);
+            assert!((whole.coverage - layered.coverage).abs() < 1e-9, "{p}");
+            assert!(
+                whole.irradiance.abs_diff_eq(layered.irradiance, 1e-9),
+                "{p}"
+            );
+            // Counting stops at the same threshold across the layers.
+            let counted = coverage(&[&first, &second], p, DVec3::Y, 1.5, 2.0);
+            assert_eq!(counted >= 2.0, whole.coverage >= 2.0, "{p}");
+        }
+        assert!(lookup(&[&Cache::new(1.0)], DVec3::ZERO, DVec3::Y, 1.5).coverage == 0.0);
     }
 }

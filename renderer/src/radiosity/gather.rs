@@ -3,7 +3,7 @@
 //! filled, kept as a new sample.
 
 use super::Radiosity;
-use super::cache::{Cache, Sample};
+use super::cache::{self, Cache, Sample};
 use crate::colour;
 use crate::object::Leaf;
 use crate::ray::{Ray, RayKind};
@@ -31,7 +31,12 @@ pub enum Phase {
 #[derive(Debug)]
 enum Caches<'w> {
     Reading(&'w [Cache]),
-    Filling(Vec<Cache>),
+    /// The pretrace's: the samples of the rounds before, read only, and this unit's own
+    /// new ones, kept apart until the round ends.
+    Filling {
+        shared: &'w [Cache],
+        own: Vec<Cache>,
+    },
 }
 
 /// A tracer's radiosity state: the cache, the phase, and how deep in diffuse bounces the
@@ -64,9 +69,11 @@ impl<'w> Walk<'w> {
         )
     }
 
-    /// For the pretrace, filling `caches`.
-    pub(super) fn filling(radiosity: &'w Radiosity, caches: Vec<Cache>) -> Walk<'w> {
-        Walk::new(radiosity, Caches::Filling(caches), Phase::Pretrace)
+    /// For a unit of the pretrace: reads the samples of `shared` and keeps its own new
+    /// ones apart.
+    pub(super) fn filling(radiosity: &'w Radiosity, shared: &'w [Cache]) -> Walk<'w> {
+        let own = radiosity.empty_caches();
+        Walk::new(radiosity, Caches::Filling { shared, own }, Phase::Pretrace)
     }
 
     fn new(radiosity: &'w Radiosity, caches: Caches<'w>, phase: Phase) -> Walk<'w> {
@@ -82,22 +89,20 @@ impl<'w> Walk<'w> {
         }
     }
 
-    pub(super) fn radiosity_settings(&self) -> &'w analysis::scene::Radiosity {
-        &self.radiosity.settings
-    }
-
-    /// The filled caches.
-    pub(super) fn into_caches(self) -> Vec<Cache> {
+    /// The samples this walk took, one cache per bounce depth; none when it only read.
+    pub(super) fn into_own_samples(self) -> Vec<Cache> {
         match self.caches {
-            Caches::Filling(caches) => caches,
-            Caches::Reading(caches) => caches.to_vec(),
+            Caches::Filling { own, .. } => own,
+            Caches::Reading(_) => Vec::new(),
         }
     }
 
-    fn cache(&self, bounce: u32) -> &Cache {
+    /// Calls `f` with the caches of `bounce` that lookups read, as one.
+    fn with_layers<T>(&self, bounce: u32, f: impl FnOnce(&[&Cache]) -> T) -> T {
+        let b = bounce as usize;
         match &self.caches {
-            Caches::Reading(c) => &c[bounce as usize],
-            Caches::Filling(c) => &c[bounce as usize],
+            Caches::Reading(c) => f(&[&c[b]]),
+            Caches::Filling { shared, own } => f(&[&shared[b], &own[b]]),
         }
     }
 
@@ -233,15 +238,14 @@ impl<'w> Tracer<'w> {
                 .settings
                 .adaptive_nearest_count
                 .map_or(0.0, f64::from);
-            let coverage = walk
-                .cache(bounce)
-                .coverage(p, n, bound, needed.max(adaptive));
+            let enough = needed.max(adaptive);
+            let coverage = walk.with_layers(bounce, |c| cache::coverage(c, p, n, bound, enough));
             walk.weakest = walk.weakest.min(coverage);
             if coverage >= needed {
                 return DVec3::ZERO;
             }
         } else {
-            let found = walk.cache(bounce).lookup(p, n, bound);
+            let found = walk.with_layers(bounce, |c| cache::lookup(c, p, n, bound));
             if bounce == 0 {
                 walk.weakest = walk.weakest.min(found.coverage);
             }
@@ -251,11 +255,11 @@ impl<'w> Tracer<'w> {
         }
         let sample = self.gather(p, n, level, eye_distance, reflectance);
         if let Some(Walk {
-            caches: Caches::Filling(caches),
+            caches: Caches::Filling { own, .. },
             ..
         }) = &mut self.radiosity
         {
-            caches[bounce as usize].insert(sample);
+            own[bounce as usize].insert(sample);
         }
         sample.irradiance
     }
