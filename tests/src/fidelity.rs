@@ -44,16 +44,14 @@ impl FidelityScene {
     /// Evaluates and renders `source` as this scene, stopping before PNG encoding.
     pub fn render_image(&self, source: &str) -> Result<renderer::Image, String> {
         let options = self.render_options();
-        let path = workspace_root().join(&self.scene);
-        let name = path
-            .file_name()
-            .and_then(|n| n.to_str())
-            .ok_or("scene path has no file name")?;
+        let name = self.file_name();
         let mut files = analysis::MemoryFiles::new();
         files.insert(name, source);
-        if let Some(dir) = path.parent() {
-            add_includes(dir, &mut files);
-            add_assets(dir, &mut files);
+        for (include, text) in self.includes() {
+            files.insert(include, text);
+        }
+        for (asset, bytes) in self.assets() {
+            files.insert_bytes(asset, bytes);
         }
         let rendered =
             renderer::pipeline::render_source(name, &files, &options).map_err(|f| f.to_human())?;
@@ -64,39 +62,55 @@ impl FidelityScene {
         let path = workspace_root().join(&self.scene);
         std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
     }
-}
 
-/// The `.inc` files beside a scene.
-fn add_includes(dir: &Path, files: &mut analysis::MemoryFiles) {
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return;
-    };
-    for entry in entries.flatten() {
-        let path = entry.path();
-        if path.extension().is_some_and(|e| e == "inc")
-            && let (Some(name), Ok(text)) = (
-                path.file_name().and_then(|n| n.to_str()),
-                std::fs::read_to_string(&path),
-            )
-        {
-            files.insert(name, text);
-        }
+    /// The scene's file name, as its diagnostics name it.
+    pub fn file_name(&self) -> &str {
+        self.scene
+            .file_name()
+            .and_then(|n| n.to_str())
+            .unwrap_or_else(|| panic!("{}: the scene path has no UTF-8 file name", self.name))
     }
-}
 
-/// The images and fonts in the `assets` folder beside a scene, by the names the scenes
-/// use for them (`assets/map.png`).
-fn add_assets(dir: &Path, files: &mut analysis::MemoryFiles) {
-    let Ok(entries) = std::fs::read_dir(dir.join("assets")) else {
-        return;
-    };
-    for entry in entries.flatten() {
-        if let (Some(name), Ok(bytes)) = (
-            entry.file_name().to_str().map(|n| format!("assets/{n}")),
-            std::fs::read(entry.path()),
-        ) {
-            files.insert_bytes(name, bytes);
+    /// The `.inc` files beside the scene, by name: what it may `#include`.
+    pub fn includes(&self) -> Vec<(String, String)> {
+        let dir = self.directory();
+        let Ok(entries) = std::fs::read_dir(&dir) else {
+            return Vec::new();
+        };
+        let mut includes = Vec::new();
+        for entry in entries.flatten() {
+            let path = entry.path();
+            if path.extension().is_some_and(|e| e == "inc")
+                && let (Some(name), Ok(text)) = (
+                    path.file_name().and_then(|n| n.to_str()),
+                    std::fs::read_to_string(&path),
+                )
+            {
+                includes.push((name.to_owned(), text));
+            }
         }
+        includes
+    }
+
+    /// The images and fonts in the `assets` folder beside the scene, by the names the
+    /// scenes use for them (`assets/map.png`).
+    pub fn assets(&self) -> Vec<(String, Vec<u8>)> {
+        let Ok(entries) = std::fs::read_dir(self.directory().join("assets")) else {
+            return Vec::new();
+        };
+        entries
+            .flatten()
+            .filter_map(|entry| {
+                let name = entry.file_name().to_str().map(|n| format!("assets/{n}"))?;
+                Some((name, std::fs::read(entry.path()).ok()?))
+            })
+            .collect()
+    }
+
+    fn directory(&self) -> PathBuf {
+        let path = workspace_root().join(&self.scene);
+        path.parent()
+            .map_or_else(|| workspace_root().to_path_buf(), Path::to_path_buf)
     }
 }
 

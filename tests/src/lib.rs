@@ -8,6 +8,7 @@ pub mod example_corpus;
 pub mod fidelity;
 pub mod image_compare;
 pub mod lsp_client;
+pub mod plugin_timing;
 pub mod typst_compiler;
 
 use std::path::{Path, PathBuf};
@@ -19,13 +20,23 @@ pub fn workspace_root() -> &'static Path {
     Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
 }
 
-/// The Cargo target directory this test binary was built into (`target/debug/deps/TEST`
-/// is three levels below it).
+/// The profile directory (`TARGET/debug` or `TARGET/release`) this binary was built into:
+/// test binaries live in its `deps` folder, the benchmarks (`src/bin`) in it directly.
+fn profile_dir() -> PathBuf {
+    let exe = std::env::current_exe().expect("the binary has a path");
+    let parent = exe.parent().expect("the binary lives in a directory");
+    if parent.file_name().is_some_and(|name| name == "deps") {
+        parent.parent().expect("TARGET/PROFILE/deps").to_path_buf()
+    } else {
+        parent.to_path_buf()
+    }
+}
+
+/// The Cargo target directory this binary was built into.
 pub fn target_dir() -> PathBuf {
-    let exe = std::env::current_exe().expect("the test binary has a path");
-    exe.ancestors()
-        .nth(3)
-        .expect("the test binary lives in TARGET/PROFILE/deps")
+    profile_dir()
+        .parent()
+        .expect("the binary lives in TARGET/PROFILE")
         .to_path_buf()
 }
 
@@ -33,8 +44,7 @@ pub fn target_dir() -> PathBuf {
 pub fn povrayst_binary() -> &'static Path {
     static BUILT: OnceLock<PathBuf> = OnceLock::new();
     BUILT.get_or_init(|| {
-        let exe = std::env::current_exe().expect("the test binary has a path");
-        let profile_dir = exe.ancestors().nth(2).expect("TARGET/PROFILE/deps/TEST");
+        let profile_dir = profile_dir();
         let release = profile_dir
             .file_name()
             .is_some_and(|name| name == "release");

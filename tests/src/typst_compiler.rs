@@ -41,9 +41,14 @@ impl Document {
         Document { dir }
     }
 
-    /// Adds a file the document reads, such as a scene or an include.
+    /// Adds a file the document reads, such as a scene or an include; `name` may name a
+    /// folder too (`assets/map.png`).
     pub fn with_file(self, name: &str, contents: impl AsRef<[u8]>) -> Document {
-        std::fs::write(self.dir.path().join(name), contents).expect("cannot write a file");
+        let path = self.dir.path().join(name);
+        if let Some(folder) = path.parent() {
+            std::fs::create_dir_all(folder).expect("cannot make a folder");
+        }
+        std::fs::write(path, contents).expect("cannot write a file");
         self
     }
 
@@ -75,11 +80,24 @@ impl Document {
 
     /// The `value` of the `metadata` labelled `label` (`<result>`), as JSON.
     pub fn query(&self, label: &str) -> Result<serde_json::Value, CompileError> {
-        let stdout = self.run(&["--query", label])?;
+        let (stdout, _) = self.run(&["--query", label])?;
         Ok(serde_json::from_str(&stdout).expect("the query printed no JSON"))
     }
 
-    fn run(&self, args: &[&str]) -> Result<String, CompileError> {
+    /// [`Document::query`] and the CPU seconds the compile took, every thread of the
+    /// compiler counted (Python's start-up and the import of the binding left out).
+    pub fn timed_query(&self, label: &str) -> Result<(serde_json::Value, f64), CompileError> {
+        let (stdout, stderr) = self.run(&["--query", label, "--timings"])?;
+        let seconds = stderr
+            .lines()
+            .find_map(|l| l.rsplit(", ").next()?.strip_suffix(" CPU s")?.parse().ok())
+            .unwrap_or_else(|| panic!("no compile time in: {stderr}"));
+        let value = serde_json::from_str(&stdout).expect("the query printed no JSON");
+        Ok((value, seconds))
+    }
+
+    /// The compiler's standard output and standard error.
+    fn run(&self, args: &[&str]) -> Result<(String, String), CompileError> {
         let output = Command::new("python3")
             .arg(workspace_root().join("scripts/typst-compile.py"))
             .arg(self.dir.path().join("main.typ"))
@@ -93,7 +111,7 @@ impl Document {
             .expect("cannot run python3: install it with scripts/setup");
         let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
         match output.status.code() {
-            Some(0) => Ok(String::from_utf8_lossy(&output.stdout).into_owned()),
+            Some(0) => Ok((String::from_utf8_lossy(&output.stdout).into_owned(), stderr)),
             Some(1) => Err(serde_json::from_str(&stderr)
                 .unwrap_or_else(|e| panic!("no JSON error report ({e}):\n{stderr}"))),
             _ => panic!(

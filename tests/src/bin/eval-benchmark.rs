@@ -1,9 +1,10 @@
 //! Times the evaluation of the slowest scenes of Debian's povray-examples three ways: our
 //! evaluator natively (CPU time of the best of three runs, with the renderer answering
 //! `trace()` and `inside()` as in a render), our evaluator in wasm as Typst runs the plugin
-//! (wasmi, inside a real Typst compile of a 16 x 12 render without antialiasing, minus a
-//! compile that only loads the plugin), and POV-Ray 3.7's own "Parse Time" (CPU seconds,
-//! `povray -D +WT1 +W16 +H12`). Prints a Markdown table.
+//! (wasmi, inside a real Typst compile of a 16 x 12 render without antialiasing, in CPU
+//! time less a compile that only loads the plugin: `tests::plugin_timing`), and POV-Ray
+//! 3.7's own "Parse Time" (CPU seconds, `povray -D +WT1 +W16 +H12`). Prints a Markdown
+//! table.
 //!
 //!   cargo run --release -p tests --bin eval-benchmark [--top N] [--no-wasm] [SCENE.pov...]
 //!
@@ -19,7 +20,7 @@ use std::process::Command;
 use std::time::{Duration, Instant};
 use tests::cpu_time::process_cpu_time;
 use tests::example_corpus::{EXAMPLES, example_scenes};
-use tests::workspace_root;
+use tests::plugin_timing::{PluginRender, PluginTimer};
 
 const WIDTH: u32 = 16;
 const HEIGHT: u32 = 12;
@@ -88,109 +89,35 @@ fn parse_cpu_seconds(log: &str) -> Option<f64> {
     before.split_whitespace().last()?.parse().ok()
 }
 
-/// The Typst side: the package installed into the target directory, and a document per
-/// scene in a temporary directory with the files of the scene's own directory.
-struct Typst {
-    package_path: PathBuf,
-}
-
-impl Typst {
-    fn install() -> Typst {
-        let exe = std::env::current_exe().expect("the benchmark has a path");
-        let target = exe
-            .ancestors()
-            .nth(2)
-            .expect("the benchmark lives in TARGET/PROFILE");
-        let package_path = target.join("typst-packages");
-        let status = Command::new(workspace_root().join("scripts/install-package"))
-            .arg(&package_path)
-            .env("CARGO_TARGET_DIR", target)
-            .stdout(std::process::Stdio::null())
-            .status()
-            .expect("cannot run scripts/install-package");
-        assert!(status.success(), "scripts/install-package failed");
-        Typst { package_path }
-    }
-
-    /// The compile time of `main.typ` in `dir` as the compiler reports it (Python's
-    /// start-up and the import of the binding left out), the best of three fresh processes.
-    fn compile_seconds(&self, dir: &Path) -> Result<f64, String> {
-        let mut best = f64::INFINITY;
-        for _ in 0..3 {
-            let run = Command::new("python3")
-                .arg(workspace_root().join("scripts/typst-compile.py"))
-                .arg(dir.join("main.typ"))
-                .args(["--query", "<result>", "--timings", "--root"])
-                .arg(dir)
-                .arg("--package-path")
-                .arg(&self.package_path)
-                .output()
-                .map_err(|e| format!("cannot run python3: {e}"))?;
-            let stderr = String::from_utf8_lossy(&run.stderr);
-            if !run.status.success() {
-                return Err(stderr.into_owned());
-            }
-            let stdout = String::from_utf8_lossy(&run.stdout);
-            if stdout.trim() != "null" {
-                return Err(format!("the scene failed in the plugin: {}", stdout.trim()));
-            }
-            let seconds = stderr
-                .lines()
-                .find_map(|l| l.rsplit(" in ").next()?.strip_suffix(" s")?.parse().ok())
-                .ok_or_else(|| format!("no compile time in: {stderr}"))?;
-            best = best.min(seconds);
-        }
-        Ok(best)
-    }
-
-    /// A document that renders `scene` (or, with `None`, only loads the plugin) and puts
-    /// the render's error, `none` if it rendered, in `<result>`.
-    fn document(scene: Option<&Path>) -> tempfile::TempDir {
-        let dir = tempfile::tempdir().expect("a temporary directory");
-        let call = match scene {
-            None => "{ let _ = version(); none }".to_owned(),
-            Some(scene) => {
-                let source = scene.parent().expect("a scene lives in a directory");
-                let (mut includes, mut files) = (String::new(), String::new());
-                for entry in std::fs::read_dir(source).expect("the scene's directory") {
-                    let path = entry.expect("a directory entry").path();
-                    let Some(name) = path.file_name().and_then(|n| n.to_str()) else {
-                        continue;
-                    };
-                    if !path.is_file() || name.contains('"') {
-                        continue;
-                    }
-                    std::fs::copy(&path, dir.path().join(name)).expect("copy a scene's file");
-                    if std::fs::read_to_string(&path).is_ok() {
-                        includes.push_str(&format!("\"{name}\": read(\"{name}\"), "));
-                    } else {
-                        files.push_str(&format!("\"{name}\": read(\"{name}\", encoding: none), "));
-                    }
-                }
-                let name = scene.file_name().and_then(|n| n.to_str()).expect("UTF-8");
-                // A Typst dictionary: `(:)` when empty, `("a": .., )` otherwise.
-                let dictionary = |entries: String| {
-                    if entries.is_empty() {
-                        "(:)".to_owned()
-                    } else {
-                        format!("({entries})")
-                    }
-                };
-                format!(
-                    "try-render(read(\"{name}\"), width: {WIDTH}, height: {HEIGHT}, \
-                     antialias: false, includes: {}, files: {}).error",
-                    dictionary(includes),
-                    dictionary(files)
-                )
-            }
+/// The scene as the package receives it, at 16 x 12 without antialiasing, with every file
+/// of its directory: UTF-8 texts as includes, the others as files.
+fn plugin_render(scene: &Path) -> PluginRender {
+    let directory = scene.parent().expect("a scene lives in a directory");
+    let (mut includes, mut files) = (Vec::new(), Vec::new());
+    for entry in std::fs::read_dir(directory).expect("the scene's directory") {
+        let path = entry.expect("a directory entry").path();
+        let Some(name) = path.file_name().and_then(|n| n.to_str()) else {
+            continue;
         };
-        let main = format!(
-            "#import \"@local/povrayst:0.1.0\": try-render, version\n\
-             #let result = {call}\n\
-             #metadata(result) <result>\n"
-        );
-        std::fs::write(dir.path().join("main.typ"), main).expect("write main.typ");
-        dir
+        if !path.is_file() {
+            continue;
+        }
+        let bytes = std::fs::read(&path).expect("a scene's file");
+        match String::from_utf8(bytes) {
+            Ok(text) => includes.push((name.to_owned(), text)),
+            Err(binary) => files.push((name.to_owned(), binary.into_bytes())),
+        }
+    }
+    PluginRender {
+        name: scene
+            .file_name()
+            .and_then(|n| n.to_str())
+            .expect("UTF-8 names")
+            .to_owned(),
+        source: std::fs::read_to_string(scene).expect("the scene's text"),
+        arguments: format!("width: {WIDTH}, height: {HEIGHT}, antialias: false"),
+        includes,
+        files,
     }
 }
 
@@ -225,31 +152,24 @@ fn main() {
     } else {
         args.iter().map(PathBuf::from).collect()
     };
-    let typst = (!no_wasm).then(Typst::install);
-    let baseline = typst.as_ref().map(|t| {
-        let dir = Typst::document(None);
-        t.compile_seconds(dir.path())
-            .unwrap_or_else(|e| panic!("the baseline compile failed: {e}"))
+    let timer = (!no_wasm).then(|| {
+        PluginTimer::new(3).unwrap_or_else(|e| panic!("the baseline compile failed: {e}"))
     });
     println!(
-        "| scene | ours native (CPU ms) | ours wasm in Typst (ms) | POV-Ray parse (CPU ms) | native / POV-Ray | wasm / POV-Ray |"
+        "| scene | ours native (CPU ms) | ours wasm in Typst (CPU ms) | POV-Ray parse (CPU ms) | native / POV-Ray | wasm / POV-Ray |"
     );
     println!("|---|---:|---:|---:|---:|---:|");
     for scene in &scenes {
         let native = best_native(scene).as_secs_f64() * 1000.0;
-        let wasm = match (&typst, baseline) {
-            (Some(t), Some(base)) => {
-                let dir = Typst::document(Some(scene));
-                match t.compile_seconds(dir.path()) {
-                    Ok(s) => Some(((s - base) * 1000.0).max(0.0)),
-                    Err(e) => {
-                        eprintln!("{}: {e}", scene.display());
-                        None
-                    }
+        let wasm = timer
+            .as_ref()
+            .and_then(|timer| match timer.seconds(&plugin_render(scene)) {
+                Ok(s) => Some(s * 1000.0),
+                Err(e) => {
+                    eprintln!("{}: {e}", scene.display());
+                    None
                 }
-            }
-            _ => None,
-        };
+            });
         let povray = povray_parse_seconds(scene).map(|s| s * 1000.0);
         let cell = |v: Option<f64>| v.map_or("-".to_owned(), |v| format!("{v:.0}"));
         let ratio = |a: Option<f64>| match (a, povray) {

@@ -5,34 +5,88 @@
 //! machine is shared, and wall time would measure the neighbours. All-thread figures are
 //! wall time, POV-Ray's as it reports its phases' elapsed seconds.
 //!
-//!   cargo run --release -p tests --bin fidelity-benchmark [--live-povray] [SCENE...]
+//!   cargo run --release -p tests --bin fidelity-benchmark [--live-povray] [--wasm]
+//!       [--wasm-check] [--runs N] [SCENE...]
 //!
 //! POV-Ray's times come from `tests/reference/povray-times.txt` (recorded by render.sh),
 //! or with `--live-povray` from running `povray` on each scene in the same run (`+WT1`, and
 //! with as many threads as ours for the all-thread columns), the best of three, so that both
 //! renderers are timed under the same load.
+//!
+//! `--wasm` adds the plugin as Typst runs it: the scene rendered by `try-render` with its
+//! fidelity options (`extra`), includes and assets inside a real Typst compile, in CPU
+//! seconds less a compile that only loads the plugin (see `tests::plugin_timing`), beside
+//! its ratio to our native single-thread time and to POV-Ray's. It builds and installs the
+//! package into the target directory and needs the `typst` Python module
+//! (`scripts/setup`). `--wasm-check` also compares the plugin's pixels with the native
+//! render's, sample by sample, in one more compile per scene. `--runs N` (3 unless given)
+//! sets how many runs each of our figures is the best of.
 
 use std::time::{Duration, Instant};
 use tests::cpu_time::process_cpu_time;
-use tests::fidelity::{manifest, reference_dir};
+use tests::fidelity::{FidelityScene, manifest, reference_dir};
+use tests::plugin_timing::{PluginRender, PluginTimer};
 
-fn best_of_three(scene: &tests::fidelity::FidelityScene, source: &str, cpu_time: bool) -> Duration {
-    (0..3)
-        .map(|_| {
-            let cpu_start = process_cpu_time();
-            let start = Instant::now();
-            if let Err(e) = scene.render_image(source) {
-                eprintln!("{}: {e}", scene.name);
-                std::process::exit(1);
-            }
-            let wall = start.elapsed();
-            match (cpu_time, cpu_start, process_cpu_time()) {
-                (true, Some(a), Some(b)) => b.saturating_sub(a),
-                _ => wall,
-            }
-        })
-        .min()
-        .expect("three runs")
+/// Our best time of `runs` renders of `scene`, in CPU time or wall time, and the picture.
+fn best_of(
+    runs: usize,
+    scene: &FidelityScene,
+    source: &str,
+    cpu_time: bool,
+) -> (Duration, renderer::Image) {
+    let mut best: Option<(Duration, renderer::Image)> = None;
+    for _ in 0..runs.max(1) {
+        let cpu_start = process_cpu_time();
+        let start = Instant::now();
+        let image = scene.render_image(source).unwrap_or_else(|e| {
+            eprintln!("{}: {e}", scene.name);
+            std::process::exit(1);
+        });
+        let wall = start.elapsed();
+        let time = match (cpu_time, cpu_start, process_cpu_time()) {
+            (true, Some(a), Some(b)) => b.saturating_sub(a),
+            _ => wall,
+        };
+        if best.as_ref().is_none_or(|(b, _)| time < *b) {
+            best = Some((time, image));
+        }
+    }
+    best.expect("at least one run")
+}
+
+/// The scene as the Typst package receives it: the fidelity options as `extra`, after the
+/// package's defaults, which are `RenderOptions::default()` as the native render starts.
+fn plugin_render(scene: &FidelityScene, source: &str) -> PluginRender {
+    let options: Vec<String> = scene.options.iter().map(|o| format!("{o:?}")).collect();
+    PluginRender {
+        name: scene.file_name().to_owned(),
+        source: source.to_owned(),
+        arguments: format!("extra: ({},)", options.join(", ")),
+        includes: scene.includes(),
+        files: scene.assets(),
+    }
+}
+
+/// How the plugin's picture compares with the native one: `same`, or the largest sample
+/// difference and the share of samples that differ.
+fn picture_comparison(plugin: &[u8], native: &renderer::Image) -> String {
+    let native = native.samples8();
+    if plugin.len() != native.len() {
+        return format!("{} samples, native {}", plugin.len(), native.len());
+    }
+    let differing: Vec<u8> = plugin
+        .iter()
+        .zip(&native)
+        .map(|(a, b)| a.abs_diff(*b))
+        .filter(|d| *d > 0)
+        .collect();
+    match differing.iter().max() {
+        None => "same".to_owned(),
+        Some(max) => format!(
+            "max diff {max}, {:.3}% of samples",
+            100.0 * differing.len() as f64 / native.len() as f64
+        ),
+    }
 }
 
 /// What to read off POV-Ray's statistics: its phases' CPU seconds, or their elapsed seconds.
@@ -99,10 +153,52 @@ fn povray_seconds(log: &str, clock: Clock) -> f64 {
     total
 }
 
+/// The command line: flags, `--runs N`, and scene names.
+struct Arguments {
+    live: bool,
+    wasm: bool,
+    wasm_check: bool,
+    runs: usize,
+    only: Vec<String>,
+}
+
+fn arguments() -> Arguments {
+    let mut args: Vec<String> = std::env::args().skip(1).collect();
+    let mut flag = |name: &str| {
+        let given = args.iter().any(|a| a == name);
+        args.retain(|a| a != name);
+        given
+    };
+    let (live, wasm, wasm_check) = (flag("--live-povray"), flag("--wasm"), flag("--wasm-check"));
+    let mut runs = 3;
+    if let Some(i) = args.iter().position(|a| a == "--runs") {
+        runs = args
+            .get(i + 1)
+            .and_then(|n| n.parse().ok())
+            .filter(|n| *n > 0)
+            .unwrap_or_else(|| {
+                eprintln!("fidelity-benchmark: --runs takes a number of at least 1");
+                std::process::exit(2);
+            });
+        args.drain(i..i + 2);
+    }
+    Arguments {
+        live,
+        wasm: wasm || wasm_check,
+        wasm_check,
+        runs,
+        only: args,
+    }
+}
+
 fn main() {
-    let mut only: Vec<String> = std::env::args().skip(1).collect();
-    let live = only.iter().any(|a| a == "--live-povray");
-    only.retain(|a| a != "--live-povray");
+    let Arguments {
+        live,
+        wasm,
+        wasm_check,
+        runs,
+        only,
+    } = arguments();
     let times = std::fs::read_to_string(reference_dir().join("povray-times.txt"))
         .expect("tests/reference/povray-times.txt");
     let recorded = |name: &str| -> Option<f64> {
@@ -120,48 +216,97 @@ fn main() {
         .build()
         .expect("a one-thread pool");
     let threads = rayon::current_num_threads();
-    print!(
+    let timer = wasm.then(|| {
+        PluginTimer::new(runs).unwrap_or_else(|e| {
+            eprintln!("fidelity-benchmark: the compile that only loads the plugin failed: {e}");
+            std::process::exit(1);
+        })
+    });
+    let mut header = format!(
         "| scene | ours, 1 thread (CPU ms) | POV-Ray +WT1 parse+trace (CPU ms, {}) | ratio | ours, {threads} threads (wall ms) |",
         if live { "this run" } else { "recorded" },
     );
+    let mut rule = "|---|---:|---:|---:|---:|".to_owned();
     if live {
-        println!(" POV-Ray +WT{threads} (wall ms) | ratio |\n|---|---:|---:|---:|---:|---:|---:|");
-    } else {
-        println!("\n|---|---:|---:|---:|---:|");
+        header += &format!(" POV-Ray +WT{threads} (wall ms) | ratio |");
+        rule += "---:|---:|";
     }
+    if let Some(timer) = &timer {
+        header += &format!(
+            " wasm in Typst (CPU ms, less {:.0} ms plugin load) | wasm / ours 1 thread | wasm / POV-Ray |",
+            timer.baseline_seconds() * 1000.0
+        );
+        rule += "---:|---:|---:|";
+    }
+    if wasm_check {
+        header += " wasm picture vs native |";
+        rule += "---|";
+    }
+    println!("{header}\n{rule}");
     for scene in manifest() {
         if !only.is_empty() && !only.contains(&scene.name) {
             continue;
         }
         let source = scene.source();
-        let one = single.install(|| best_of_three(&scene, &source, true));
-        let all = best_of_three(&scene, &source, false);
+        let (one, image) = single.install(|| best_of(runs, &scene, &source, true));
+        let (all, _) = best_of(runs, &scene, &source, false);
         let ms = |d: Duration| d.as_secs_f64() * 1000.0;
         let povray = if live {
             live_povray_seconds(&scene, 1, Clock::Cpu)
         } else {
             recorded(&scene.name)
         };
-        let (pov, ratio) = match povray {
-            Some(p) => (
-                format!("{:.0}", p * 1000.0),
-                format!("{:.2}", ms(one) / (p * 1000.0)),
-            ),
-            None => ("-".into(), "-".into()),
+        let ratio = |a: f64, b: Option<f64>| match b {
+            Some(b) if b > 0.0 => format!("{:.2}", a / b),
+            _ => "-".into(),
         };
-        print!(
+        let pov_ms = povray.map(|p| p * 1000.0);
+        let mut row = format!(
             "| {} | {:.1} | {} | {} | {:.1} |",
             scene.name,
             ms(one),
-            pov,
-            ratio,
+            pov_ms.map_or("-".into(), |p| format!("{p:.0}")),
+            ratio(ms(one), pov_ms),
             ms(all)
         );
         match live.then(|| live_povray_seconds(&scene, threads, Clock::Wall)) {
-            Some(Some(p)) => println!(" {:.0} | {:.2} |", p * 1000.0, ms(all) / (p * 1000.0)),
-            Some(None) => println!(" - | - |"),
-            None => println!(),
+            Some(Some(p)) => {
+                row += &format!(
+                    " {:.0} | {} |",
+                    p * 1000.0,
+                    ratio(ms(all), Some(p * 1000.0))
+                )
+            }
+            Some(None) => row += " - | - |",
+            None => {}
         }
+        let render = plugin_render(&scene, &source);
+        if let Some(timer) = &timer {
+            match timer.seconds(&render) {
+                Ok(s) => {
+                    let wasm_ms = s * 1000.0;
+                    row += &format!(
+                        " {wasm_ms:.0} | {} | {} |",
+                        ratio(wasm_ms, Some(ms(one))),
+                        ratio(wasm_ms, pov_ms)
+                    );
+                }
+                Err(e) => {
+                    eprintln!("{}: {e}", scene.name);
+                    row += " error | - | - |";
+                }
+            }
+        }
+        if wasm_check {
+            match render.pixels() {
+                Ok(pixels) => row += &format!(" {} |", picture_comparison(&pixels, &image)),
+                Err(e) => {
+                    eprintln!("{}: {e}", scene.name);
+                    row += " error |";
+                }
+            }
+        }
+        println!("{row}");
     }
 }
 
