@@ -85,25 +85,32 @@ fn value_at(pattern: &scene::Pattern, at: &TexturePoint) -> PatternValue {
 }
 
 impl Surface {
-    /// Calls `f` with each stack of layers that shows at `at` and its weight.
+    /// Calls `f` with each stack of layers that shows at `at`, its weight, and where the
+    /// layers' patterns are evaluated: `at`, or where a texture map's pattern moved it.
     pub fn for_each_layers(
         &self,
         at: &TexturePoint,
         weight: f64,
-        f: &mut impl FnMut(f64, &[Layer]),
+        f: &mut impl FnMut(f64, &[Layer], &TexturePoint),
     ) {
         match self {
-            Surface::Layers(layers) => f(weight, layers),
+            Surface::Layers(layers) => f(weight, layers, at),
             Surface::Pattern { pattern, map }
                 if matches!(pattern.kind, scene::PatternKind::Average) =>
             {
+                let at = at.for_pattern(pattern).for_entries(pattern);
                 for (share, surface) in pattern::average_shares(map) {
-                    surface.for_each_layers(&at.for_pattern(pattern), weight * share, f);
+                    surface.for_each_layers(&at, weight * share, f);
                 }
             }
             Surface::Pattern { pattern, map } => {
                 let at = at.for_pattern(pattern);
                 let (a, b, t) = locate(map, value_at(pattern, &at));
+                let at = if map[a].1.needs_point() || map[b].1.needs_point() {
+                    at.for_entries(pattern)
+                } else {
+                    at
+                };
                 if a == b || t == 0.0 {
                     map[a].1.for_each_layers(&at, weight, f);
                 } else if t == 1.0 {
@@ -129,6 +136,17 @@ impl Surface {
                     }
                 }
             }
+        }
+    }
+
+    /// Whether the surface looks at the point at all: layers of solid colours without
+    /// bumps do not, and spare their pattern the work of finding where its entries are.
+    fn needs_point(&self) -> bool {
+        match self {
+            Surface::Layers(layers) => layers
+                .iter()
+                .any(|l| !matches!(l.pigment, Pigment::Solid(_)) || l.normal.is_some()),
+            Surface::Pattern { .. } | Surface::Blend { .. } => true,
         }
     }
 
@@ -199,15 +217,21 @@ impl Pigment {
             Pigment::Pattern { pattern, map }
                 if matches!(pattern.kind, scene::PatternKind::Average) =>
             {
+                let at = at.for_pattern(pattern).for_entries(pattern);
                 pattern::weighted_colour(
-                    pattern::average_shares(map).map(|(share, pigment)| {
-                        (share, pigment.colour_at(&at.for_pattern(pattern)))
-                    }),
+                    pattern::average_shares(map)
+                        .map(|(share, pigment)| (share, pigment.colour_at(&at))),
                 )
             }
             Pigment::Pattern { pattern, map } => {
                 let at = at.for_pattern(pattern);
                 let (a, b, t) = locate(map, value_at(pattern, &at));
+                let solid = |i: usize| matches!(map[i].1, Pigment::Solid(_));
+                let at = if solid(a) && solid(b) {
+                    at
+                } else {
+                    at.for_entries(pattern)
+                };
                 if a == b || t == 0.0 {
                     map[a].1.colour_at(&at)
                 } else {
@@ -373,8 +397,8 @@ mod tests {
         let at = TexturePoint::in_space(p);
         material
             .surface
-            .for_each_layers(&at, 1.0, &mut |w, layers| {
-                seen.push((w, layers[0].pigment.colour_at(&at).rgb));
+            .for_each_layers(&at, 1.0, &mut |w, layers, at| {
+                seen.push((w, layers[0].pigment.colour_at(at).rgb));
             });
         seen
     }

@@ -102,12 +102,14 @@ fn mapped(
     if entries.is_empty() {
         return n;
     }
+    // The entries are evaluated where the pattern's warps and turbulence moved the point.
+    let entries_at = pattern::entry_point(pattern, p).unwrap_or(p);
     if matches!(pattern.kind, PatternKind::Average) {
         // Each entry perturbs its own copy of the normal; the copies are weighted, added
         // and normalized.
         return pattern::average_shares(entries)
             .fold(DVec3::ZERO, |sum, (share, entry)| {
-                sum + perturb(entry, p, n, facing) * share
+                sum + perturb(entry, entries_at, n, facing) * share
             })
             .normalize_or_zero();
     }
@@ -118,11 +120,11 @@ fn mapped(
         }
         PatternValue::Blend(v) => pattern::blend_position(entries.iter().map(|(at, _)| *at), v),
     };
-    let lower = perturb(&entries[a].1, p, n, facing);
+    let lower = perturb(&entries[a].1, entries_at, n, facing);
     if a == b || t == 0.0 {
         return lower;
     }
-    let upper = perturb(&entries[b].1, p, n, facing);
+    let upper = perturb(&entries[b].1, entries_at, n, facing);
     (lower * (1.0 - t) + upper * t).normalize_or_zero()
 }
 

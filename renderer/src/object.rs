@@ -186,7 +186,12 @@ impl Leaf {
     /// Calls `f` with each stack of texture layers that colours the point, and its weight:
     /// the object's texture, a mesh triangle's own, or the three textures of a triangle's
     /// corners weighted by how near the point is to each.
-    pub fn for_each_layers(&self, at: &TexturePoint, part: u32, f: &mut impl FnMut(f64, &[Layer])) {
+    pub fn for_each_layers(
+        &self,
+        at: &TexturePoint,
+        part: u32,
+        f: &mut impl FnMut(f64, &[Layer], &TexturePoint),
+    ) {
         if let Shape::Mesh(mesh) = &self.shape
             && !self.face_materials.is_empty()
         {
@@ -216,8 +221,8 @@ impl Leaf {
     /// map's or a triangle's blend.
     pub fn transmitted_at(&self, at: &TexturePoint, part: u32) -> DVec3 {
         let mut total = DVec3::ZERO;
-        self.for_each_layers(at, part, &mut |w, layers| {
-            total += transmitted_through(layers, at) * w;
+        self.for_each_layers(at, part, &mut |w, layers, layers_at| {
+            total += transmitted_through(layers, layers_at) * w;
         });
         total
     }

@@ -41,6 +41,15 @@ impl TexturePoint {
         }
     }
 
+    /// Where the entries of `pattern`'s map are evaluated: the point the pattern's warps
+    /// and turbulence moved it to (see [`analysis::pattern::entry_point`]).
+    pub fn for_entries(&self, pattern: &Pattern) -> TexturePoint {
+        match analysis::pattern::entry_point(pattern, self.world) {
+            Some(world) => TexturePoint { world, ..*self },
+            None => *self,
+        }
+    }
+
     /// The point with the normal a layer's bumps turned the surface's to, for the
     /// patterns that look at it.
     pub fn with_normal(&self, normal: DVec3) -> TexturePoint {

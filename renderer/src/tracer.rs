@@ -208,10 +208,10 @@ impl<'w> Tracer<'w> {
         if !self.world.quality.lighting {
             // Quality levels 0 and 1 show the top pigment under full ambient light: no
             // normal, no light is needed.
-            leaf.for_each_layers(&at, hit.part, &mut |w, layers| {
+            leaf.for_each_layers(&at, hit.part, &mut |w, layers, layers_at| {
                 let top = layers
                     .first()
-                    .map_or(DVec3::ZERO, |l| l.pigment.colour_at(&at).rgb);
+                    .map_or(DVec3::ZERO, |l| l.pigment.colour_at(layers_at).rgb);
                 total = total + Sample::new(top, 0.0) * w;
             });
             return total;
@@ -221,8 +221,8 @@ impl<'w> Tracer<'w> {
         if normal.dot(ray.direction) > 0.0 {
             normal = -normal;
         }
-        leaf.for_each_layers(&at, hit.part, &mut |w, layers| {
-            let s = self.shade_layers(ray, &at, normal, hit, layers, level, weight * w);
+        leaf.for_each_layers(&at, hit.part, &mut |w, layers, layers_at| {
+            let s = self.shade_layers(ray, &at, layers_at, normal, hit, layers, level, weight * w);
             total = total + s * w;
         });
         total
@@ -230,12 +230,14 @@ impl<'w> Tracer<'w> {
 
     /// One stack of texture layers, top first, as POV-Ray shades them: each layer adds its
     /// own light scaled by what the layers above let through, then the light from behind
-    /// the surface passes all of them, and each layer's reflection is added.
+    /// the surface passes all of them, and each layer's reflection is added. The surface
+    /// is lit at `at`; its layers' patterns are evaluated at `layers_at`.
     #[allow(clippy::too_many_arguments)]
     fn shade_layers(
         &mut self,
         ray: &Ray,
         at: &TexturePoint,
+        layers_at: &TexturePoint,
         raw_normal: DVec3,
         hit: &Hit<'w>,
         layers: &[Layer],
@@ -271,14 +273,19 @@ impl<'w> Tracer<'w> {
             if let Some(bumps) = &layer.normal
                 && world.quality.normals
             {
-                normal = crate::normal::perturb(bumps, p, normal, at.facing.as_ref());
+                normal = crate::normal::perturb(
+                    bumps,
+                    layers_at.world,
+                    normal,
+                    layers_at.facing.as_ref(),
+                );
             }
             if i == 0 {
                 top_normal = normal;
             }
-            let pigment = match at.facing {
-                Some(_) => layer.pigment.colour_at(&at.with_normal(normal)),
-                None => layer.pigment.colour_at(at),
+            let pigment = match layers_at.facing {
+                Some(_) => layer.pigment.colour_at(&layers_at.with_normal(normal)),
+                None => layer.pigment.colour_at(layers_at),
             };
             let finish = &*layer.finish;
             let opacity = if world.legacy_opacity {

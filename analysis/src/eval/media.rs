@@ -219,6 +219,11 @@ impl Evaluator<'_> {
                     }
                     DENSITY_MAP_KW => {
                         *map = self.density_map_body()?;
+                        super::texture::into_pattern_space(
+                            map,
+                            pattern,
+                            super::texture::transform_pigment,
+                        );
                         continue;
                     }
                     _ => {

@@ -57,7 +57,12 @@ impl Evaluator<'_> {
             }
         };
         if keyword.kind == NORMAL_MAP_KW {
-            let map = self.normal_map_body()?;
+            let mut map = self.normal_map_body()?;
+            super::texture::into_pattern_space(
+                &mut map,
+                &pattern,
+                super::texture::transform_normal,
+            );
             current.kind = NormalKind::Map { pattern, map };
             return Ok(());
         }

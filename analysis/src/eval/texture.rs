@@ -103,12 +103,13 @@ impl Evaluator<'_> {
                     };
                 }
                 TEXTURE_MAP_KW => {
-                    let Texture::Pattern { map, .. } = &mut texture else {
+                    let Texture::Pattern { pattern, map } = &mut texture else {
                         return Err(
                             self.error_at(&token, "a texture_map needs a pattern before it")
                         );
                     };
                     *map = self.texture_map_body()?;
+                    into_pattern_space(map, pattern, transform_texture);
                 }
                 _ if matches!(texture, Texture::Pattern { .. }) => {
                     let Texture::Pattern { pattern, .. } = &mut texture else {
@@ -328,6 +329,7 @@ impl Evaluator<'_> {
                     }
                     PIGMENT_MAP_KW => {
                         *map = self.pigment_map_body()?;
+                        into_pattern_space(map, pattern, transform_pigment);
                         continue;
                     }
                     _ => {
@@ -864,7 +866,7 @@ impl Evaluator<'_> {
             if Self::starts_transform(token.kind) {
                 let t = self.transformation(&token)?;
                 if let Some(normal) = &mut normal {
-                    move_normal(normal, &t, Reach::Every);
+                    transform_normal(normal, &t);
                 }
                 continue;
             }
@@ -1307,6 +1309,30 @@ fn default_map(kind: &PatternKind) -> BlendMap<Pigment> {
     }
 }
 
+/// Moves a map's entries by the transformations its pattern has so far. POV-Ray
+/// evaluates the entries in the pattern's space, so a transformation written before the
+/// map moves them as much as one written after it, which moves pattern and entries alike
+/// as it comes (measured: `gradient y scale 10 pigment_map { ... }` draws what
+/// `gradient y pigment_map { ... } scale 10` draws). The pattern's warps reach the
+/// entries when they are evaluated (`pattern::entry_point`).
+pub(super) fn into_pattern_space<T>(
+    map: &mut BlendMap<T>,
+    pattern: &Pattern,
+    transform: impl Fn(&mut T, &Transform),
+) {
+    let moved = crate::pattern::all_transforms(pattern);
+    if !moved.is_identity() {
+        for (_, entry) in &mut map.entries {
+            transform(entry, &moved);
+        }
+    }
+}
+
+/// Moves a normal's patterns by a transformation written in it.
+pub(super) fn transform_normal(normal: &mut Normal, t: &Transform) {
+    move_normal(normal, t, Reach::Every);
+}
+
 /// Which patterns a transformation moves.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Reach {
@@ -1561,5 +1587,59 @@ mod tests {
         evaluate_ok(&format!(
             "union {{ box {{ -1, 1 {red} }} sphere {{ 1, 1 }} cutaway_textures }}"
         ));
+    }
+
+    /// The debug text a scene prints.
+    fn printed(text: &str) -> String {
+        let files = crate::MemoryFiles::new().with("scene.pov", text);
+        let evaluation = crate::evaluate("scene.pov", &files, &crate::EvalOptions::default());
+        assert!(!evaluation.has_errors(), "{:?}", evaluation.diagnostics);
+        evaluation.debug_text()
+    }
+
+    /// A map's entries are evaluated where their pattern was: its transformations move
+    /// them whether written before the map or after, and its warps and turbulence move
+    /// their point, but for marble and wood, whose turbulence goes into their value. As
+    /// POV-Ray draws them (tests/reference/scenes/patterns-map-space.pov; the turbulence
+    /// cases measured on its renders: a turbulent gradient whose entries are the same
+    /// gradient draws what the turbulent gradient alone draws).
+    #[test]
+    fn map_entries_are_evaluated_where_their_pattern_was() {
+        let red_at = |pigment: &str, y: f64| -> f64 {
+            printed(&format!(
+                "#declare Q = pigment {{ gradient y color_map {{ [0 rgb 0] [1 rgb 1] }} }}
+                 #declare F = function {{ pigment {{ {pigment} }} }}
+                 #debug str(F(0.3, {y}, 0.2).red, 0, 6)"
+            ))
+            .parse()
+            .unwrap()
+        };
+        for y in [0.35, 1.7, 2.45] {
+            let plain = red_at("Q", y);
+            let scaled = red_at("Q scale 10", y);
+            assert_ne!(plain, scaled);
+            for before_or_after in [
+                "gradient y scale 10 pigment_map { [0 Q] [1 Q] }",
+                "gradient y pigment_map { [0 Q] [1 Q] } scale 10",
+            ] {
+                assert_eq!(red_at(before_or_after, y), scaled, "{before_or_after}");
+            }
+            let turbulent = "gradient y turbulence 0.6 color_map { [0 rgb 0] [1 rgb 1] }";
+            assert_eq!(
+                red_at("gradient y turbulence 0.6 pigment_map { [0 Q] [1 Q] }", y),
+                red_at(turbulent, y)
+            );
+            assert_eq!(
+                red_at(
+                    "gradient y warp { turbulence 0.6 } pigment_map { [0 Q] [1 Q] }",
+                    y
+                ),
+                red_at("Q warp { turbulence 0.6 }", y)
+            );
+            assert_eq!(
+                red_at("marble turbulence 0.6 pigment_map { [0 Q] [1 Q] }", y),
+                plain
+            );
+        }
     }
 }

@@ -17,7 +17,7 @@ pub mod warp;
 pub mod waves;
 
 use crate::noise;
-use crate::scene::{Colour, Pattern, PatternKind, Pigment, WaveType};
+use crate::scene::{Colour, Pattern, PatternKind, Pigment, Transform, Warp, WaveType};
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
@@ -127,23 +127,24 @@ pub fn pigment_colour(pigment: &Pigment, world: DVec3) -> Colour {
             if entries.is_empty() {
                 return Colour::BLACK;
             }
+            let entries_at = entry_point(pattern, world).unwrap_or(world);
             if matches!(pattern.kind, PatternKind::Average) {
                 return weighted_colour(
                     average_shares(entries)
-                        .map(|(share, entry)| (share, pigment_colour(entry, world))),
+                        .map(|(share, entry)| (share, pigment_colour(entry, entries_at))),
                 );
             }
             match evaluate(pattern, world) {
                 PatternValue::Block(i) => {
-                    pigment_colour(&entries[i.min(entries.len() - 1)].1, world)
+                    pigment_colour(&entries[i.min(entries.len() - 1)].1, entries_at)
                 }
                 PatternValue::Blend(v) => {
                     let (a, b, t) = blend_position(entries.iter().map(|(at, _)| *at), v);
-                    let lower = pigment_colour(&entries[a].1, world);
+                    let lower = pigment_colour(&entries[a].1, entries_at);
                     if a == b {
                         lower
                     } else {
-                        lower.lerp(pigment_colour(&entries[b].1, world), t)
+                        lower.lerp(pigment_colour(&entries[b].1, entries_at), t)
                     }
                 }
             }
@@ -245,6 +246,43 @@ pub fn evaluate(pattern: &Pattern, world: DVec3) -> PatternValue {
 pub fn evaluate_on(pattern: &Pattern, world: DVec3, facing: Option<&Facing>) -> PatternValue {
     let local = pattern.transform.inverse.transform_point3(world);
     evaluate_warped(pattern, warped(pattern, local), facing)
+}
+
+/// Every transformation of a pattern, those before its warps and those after, composed:
+/// what a map's entries carry of their pattern's movements (see `entry_point`).
+pub fn all_transforms(pattern: &Pattern) -> Transform {
+    pattern
+        .warps
+        .iter()
+        .filter_map(|warp| match warp {
+            Warp::Transform(t) => Some(t),
+            _ => None,
+        })
+        .fold(Transform::IDENTITY, |sum, t| sum.then(t))
+        .then(&pattern.transform)
+}
+
+/// The world point at which the entries of `pattern`'s map are evaluated, when it is not
+/// `world` itself. POV-Ray hands the entries the point its pattern was evaluated at: after
+/// the pattern's transformations, warps and classic turbulence, except that marble and wood
+/// add their turbulence to their value and hand on the point before it (measured on
+/// pigment, texture and normal maps). The entries carry the pattern's transformations
+/// themselves (`all_transforms`), so the point is carried back out through them; without
+/// warps or a turbulence that moves it, that is `world` again, and `None` says so.
+pub fn entry_point(pattern: &Pattern, world: DVec3) -> Option<DVec3> {
+    let turbulence = pattern
+        .turbulence
+        .as_ref()
+        .filter(|_| !matches!(pattern.kind, PatternKind::Marble | PatternKind::Wood));
+    if pattern.warps.is_empty() && turbulence.is_none() {
+        return None;
+    }
+    let inner = warped(pattern, pattern.transform.inverse.transform_point3(world));
+    let inner = match turbulence {
+        Some(t) => inner + warp::displacement(t, inner),
+        None => inner,
+    };
+    Some(all_transforms(pattern).point(inner))
 }
 
 /// A point of pattern space carried through the pattern's warps, the last written first.

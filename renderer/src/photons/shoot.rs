@@ -605,7 +605,7 @@ impl Surface {
         let mut heaviest = 0.0;
         let mut reflectivity_sum = DVec3::ZERO;
         let at = leaf.texture_point(p, part, ray);
-        leaf.for_each_layers(&at, part, &mut |w, layers| {
+        leaf.for_each_layers(&at, part, &mut |w, layers, layers_at| {
             let Some(top) = layers.first() else {
                 return;
             };
@@ -613,9 +613,9 @@ impl Surface {
             if let Some(bumps) = &top.normal
                 && world.quality.normals
             {
-                n = crate::normal::perturb(bumps, p, raw, at.facing.as_ref());
+                n = crate::normal::perturb(bumps, layers_at.world, raw, layers_at.facing.as_ref());
             }
-            let colour = top.pigment.colour_at(&at.with_normal(n));
+            let colour = top.pigment.colour_at(&layers_at.with_normal(n));
             let cos = -ray.direction.dot(n);
             reflectivity_sum += w * reflectivity(&top.finish, colour.rgb, cos, relative_ior);
             if w > heaviest {
