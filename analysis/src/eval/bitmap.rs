@@ -6,6 +6,7 @@
 use super::tokens::Token;
 use super::{Evaluator, Result};
 use crate::image::{self, FileGamma, Image, ImageFormat};
+use crate::pattern::density_file::DensityGrid;
 use crate::scene::Transform;
 use crate::scene::bitmap::{
     Bitmap, ImageMap, ImagePattern, ImageValue, Interpolation, MapType, PaletteAmounts,
@@ -109,6 +110,34 @@ impl Evaluator<'_> {
         let image = Arc::new(image);
         self.images.insert(name.to_owned(), image.clone());
         Ok(image)
+    }
+
+    /// `df3 "name"` after `density_file`: the grid, read once however often it is used.
+    pub(super) fn density_file(&mut self) -> Result<Arc<DensityGrid>> {
+        let format = self.next()?;
+        if format.kind != DF3_KW {
+            return Err(self.error_at(
+                &format,
+                format!(
+                    "expected df3 after density_file, found {}",
+                    self.describe(&format)
+                ),
+            ));
+        }
+        let at = self.next()?;
+        self.unget(at.clone());
+        let name = self.string()?;
+        if let Some(grid) = self.density_grids.get(&name) {
+            return Ok(grid.clone());
+        }
+        let Some(bytes) = self.source.read_bytes(&name) else {
+            return Err(self.missing_file(&at, &name, "density"));
+        };
+        let grid = DensityGrid::from_df3(&bytes)
+            .map_err(|m| self.error_at(&at, format!("cannot read '{name}': {m}")))?;
+        let grid = Arc::new(grid);
+        self.density_grids.insert(name, grid.clone());
+        Ok(grid)
     }
 
     /// "cannot find image file 'x'", with the files the source has.
@@ -399,6 +428,39 @@ mod tests {
         assert_eq!(
             error(&scene("png \"map.png\" map_type 3"), files),
             "not supported yet: map_type 3 58..59 []"
+        );
+    }
+
+    #[test]
+    fn density_files_are_found_read_or_refused_with_located_errors() {
+        let mut files = MemoryFiles::new();
+        // A 2 by 1 by 1 grid of 8-bit voxels.
+        files.insert_bytes("grid.df3", &[0u8, 2, 0, 1, 0, 1, 0, 255][..]);
+        files.insert_bytes("short.df3", &[0u8, 2, 0, 1, 0, 1, 0][..]);
+        let scene = |body: &str| format!("sphere {{ 0, 1 pigment {{ density_file {body} }} }}");
+        for ok in ["df3 \"grid.df3\"", "df3 \"grid.df3\" interpolate 1 scale 2"] {
+            let ok = files.clone().with("scene.pov", scene(ok));
+            assert!(!evaluate("scene.pov", &ok, &EvalOptions::default()).has_errors());
+        }
+        assert_eq!(
+            error(&scene("df3 \"missing.df3\""), files.clone()),
+            "cannot find density file 'missing.df3' 41..54 [\"files available: grid.df3, short.df3\"]"
+        );
+        assert!(
+            error(&scene("df3 \"short.df3\""), files.clone())
+                .starts_with("cannot read 'short.df3': not a valid df3 file")
+        );
+        assert_eq!(
+            error(&scene("png \"grid.df3\""), files.clone()),
+            "expected df3 after density_file, found 'png' 37..40 []"
+        );
+        assert_eq!(
+            error(&scene("df3 \"grid.df3\" interpolate 2"), files.clone()),
+            "not supported yet: tricubic density_file interpolation (interpolate 2) 64..65 []"
+        );
+        assert_eq!(
+            error(&scene("df3 \"grid.df3\" interpolate 3"), files),
+            "interpolate must be 0, 1 or 2 for a density_file, not 3 64..65 []"
         );
     }
 }

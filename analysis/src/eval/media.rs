@@ -178,7 +178,7 @@ impl Evaluator<'_> {
                 self.unget(first);
                 Pigment::Solid(self.scene_colour()?)
             }
-            IMAGE_MAP_KW | DENSITY_FILE_KW => {
+            IMAGE_MAP_KW => {
                 return Err(self.unsupported(&first, self.text(&first)));
             }
             kind if super::texture::pattern_keyword(kind) => {

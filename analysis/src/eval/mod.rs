@@ -222,6 +222,7 @@ pub(crate) struct Evaluator<'a> {
     include_stack: Vec<FileId>,
     /// Images decoded so far, by the name the scene used, so each is decoded once.
     images: HashMap<String, Arc<crate::image::Image>>,
+    density_grids: HashMap<String, Arc<crate::pattern::density_file::DensityGrid>>,
     steps: u64,
     loop_iterations: u64,
     macro_depth: usize,
@@ -275,6 +276,7 @@ impl<'a> Evaluator<'a> {
             macro_calls_held: false,
             include_stack: Vec::new(),
             images: HashMap::new(),
+            density_grids: HashMap::new(),
             written: std::collections::BTreeMap::new(),
             steps: 0,
             loop_iterations: 0,

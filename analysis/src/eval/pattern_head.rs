@@ -178,6 +178,27 @@ impl Evaluator<'_> {
         if let PatternKind::Pavement(pavement) = &mut pattern.kind {
             return self.pavement_parameter(pavement, token);
         }
+        if let PatternKind::DensityFile { trilinear, .. } = &mut pattern.kind
+            && token.kind == INTERPOLATE_KW
+        {
+            let at = self.next()?;
+            self.unget(at.clone());
+            *trilinear = match self.int()? {
+                0 => false,
+                1 => true,
+                2 => {
+                    return Err(self
+                        .unsupported(&at, "tricubic density_file interpolation (interpolate 2)"));
+                }
+                other => {
+                    return Err(self.error_at(
+                        &at,
+                        format!("interpolate must be 0, 1 or 2 for a density_file, not {other}"),
+                    ));
+                }
+            };
+            return Ok(true);
+        }
         if let PatternKind::Facets {
             coords,
             size,

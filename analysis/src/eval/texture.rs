@@ -282,9 +282,6 @@ impl Evaluator<'_> {
                 Pigment::Solid(self.scene_colour()?)
             }
             IMAGE_MAP_KW => Pigment::Image(Box::new(self.image_map_body()?)),
-            DENSITY_FILE_KW => {
-                return Err(self.unsupported(&first, self.text(&first)));
-            }
             kind if pattern_keyword(kind) => {
                 let pattern = self.pattern(&first)?;
                 let map = match block_entries(&pattern.kind) {
@@ -470,6 +467,10 @@ impl Evaluator<'_> {
                 PatternKind::Function(Arc::new(self.function_value()?))
             }
             IMAGE_PATTERN_KW => PatternKind::Image(Box::new(self.image_pattern_body()?)),
+            DENSITY_FILE_KW => PatternKind::DensityFile {
+                grid: self.density_file()?,
+                trilinear: false,
+            },
             _ => match self.pattern_head(keyword)? {
                 Some(pattern) => pattern,
                 None => {
@@ -1245,6 +1246,7 @@ pub fn pattern_keyword(kind: SyntaxKind) -> bool {
         kind,
         AGATE_KW
             | AOI_KW
+            | DENSITY_FILE_KW
             | AVERAGE_KW
             | BOXED_KW
             | BOZO_KW

@@ -8,6 +8,7 @@
 pub mod bitmap;
 mod blocks;
 pub mod cells;
+pub mod density_file;
 pub mod facing;
 mod fractal;
 pub mod pavement;
@@ -400,6 +401,7 @@ fn blend_value(kind: &PatternKind, p: DVec3) -> f64 {
         PatternKind::Fractal(f) => fractal::value(f, p),
         PatternKind::Function(f) => f.eval(&[p.x, p.y, p.z]),
         PatternKind::Image(image) => bitmap::image_value(image, p),
+        PatternKind::DensityFile { grid, trilinear } => grid.value(p, *trilinear),
         PatternKind::Tiling(number) => tiling::value(*number, p),
         PatternKind::Pavement(pavement) => pavement::value(pavement, p),
         _ => 0.0,

@@ -89,6 +89,12 @@ pub enum PatternKind {
         solid: bool,
     },
     Cylindrical,
+    /// `density_file df3 "name"`: a grid of voxels in the unit cube, blended trilinearly
+    /// with `interpolate 1`.
+    DensityFile {
+        grid: Arc<crate::pattern::density_file::DensityGrid>,
+        trilinear: bool,
+    },
     Dents,
     Facets {
         coords: f64,
