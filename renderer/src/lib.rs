@@ -8,6 +8,7 @@ mod bump_map;
 mod bvh;
 mod camera;
 mod colour;
+mod csg_spans;
 mod dispersion;
 mod fast_math;
 mod focal_blur;

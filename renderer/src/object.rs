@@ -6,11 +6,12 @@
 //! inverted children, so subtracting a union removes no surface the union hides.
 
 use crate::bounds::Aabb;
+use crate::csg_spans::{ChildSpans, Meeting};
 use crate::interior::Interior;
 use crate::material::{Layer, Material, transmitted_through};
 use crate::photons::SurfacePhotons;
 use crate::ray::{Ray, RayKind};
-use crate::shapes::{Roots, Shape};
+use crate::shapes::{Root, Roots, Shape, Span};
 use crate::texture_point::TexturePoint;
 use analysis::pattern::Facing;
 use analysis::scene::mesh::FaceTexture;
@@ -277,6 +278,15 @@ impl Leaf {
         }
     }
 
+    /// The stretch of the ray inside the shape, inverse or not, for convex shapes (see
+    /// [`Shape::convex_span`]).
+    pub fn span(&self, ray: &Ray) -> Option<Span> {
+        if !self.shape.has_convex_span() {
+            return None;
+        }
+        self.shape.convex_span(&self.local_ray(ray))
+    }
+
     fn roots(&self, ray: &Ray) -> Roots {
         let mut roots = Roots::new();
         self.shape.intersect(&self.local_ray(ray), &mut roots);
@@ -380,21 +390,6 @@ impl Csg {
             region,
             hull,
         }
-    }
-
-    /// Whether the query's ray may meet the surface: not when it passes by the hull, or
-    /// crosses it only outside the query's interval.
-    fn meets_hull(&self, q: &Query) -> bool {
-        let Some(Object::Leaf(hull)) = self.hull.map(|i| &self.children[i]) else {
-            return true;
-        };
-        let ray = hull.local_ray(&q.ray);
-        let span = match &hull.shape {
-            Shape::Sphere(sphere) => sphere.span(&ray),
-            Shape::Cuboid(c) => c.crossings(&ray).map(|(near, far)| (near.t, far.t)),
-            _ => return true,
-        };
-        span.is_some_and(|(near, far)| !(near > q.tmax || far < q.tmin))
     }
 }
 
@@ -542,11 +537,6 @@ impl Object {
         {
             q_clip(csg.bounds, q)?;
         }
-        if let Object::Csg(csg) = self
-            && !csg.meets_hull(q)
-        {
-            return None;
-        }
         match self {
             Object::Leaf(leaf) => {
                 if !leaf.visibility.sees(q.kind) {
@@ -570,6 +560,12 @@ impl Object {
                 best
             }
             Object::Csg(csg) => {
+                let mut spans = ChildSpans::new();
+                let meeting = csg.meet(&mut spans, q)?;
+                if let Some(hit) = meeting.and_then(|m| csg.entry_hit(&spans, &m, q)) {
+                    return Some(hit);
+                }
+                spans.complete(&csg.children, q);
                 // Each child's crossings are tested nearest first and only up to the
                 // nearest kept so far: testing whether a crossing is kept (inside the
                 // other children or not) costs more than finding it.
@@ -579,14 +575,41 @@ impl Object {
                     if !csg.may_keep(i) {
                         break;
                     }
-                    let start = scratch.len();
-                    child.all_hits(&q, scratch);
-                    scratch[start..].sort_by(|a, b| a.t.total_cmp(&b.t));
-                    let kept = scratch[start..]
-                        .iter()
-                        .find(|hit| csg.keeps(i, q.ray.at(hit.t)))
-                        .copied();
-                    scratch.truncate(start);
+                    let sole_other = meeting.filter(|m| m.sole_other == Some(i));
+                    let kept = match (child, spans.span(i), sole_other) {
+                        (Object::Leaf(leaf), Some(span), _) => {
+                            let kept = |r: &Root| {
+                                r.t > q.tmin && r.t < q.tmax && csg.keeps(&spans, i, r.t, &q.ray)
+                            };
+                            [span.enter, span.exit]
+                                .iter()
+                                .find(|r| leaf.visibility.sees(q.kind) && kept(r))
+                                .map(|r| Hit {
+                                    t: r.t,
+                                    leaf,
+                                    part: r.part,
+                                })
+                        }
+                        (_, _, Some(m)) => {
+                            // Inside every other child is inside their meeting: the
+                            // child's own nearest crossing there is the one kept.
+                            let mut within = q;
+                            within.tmin = within.tmin.max(m.lo);
+                            within.tmax = within.tmax.min(m.hi);
+                            child.nearest(&within, scratch)
+                        }
+                        _ => {
+                            let start = scratch.len();
+                            child.all_hits(&q, scratch);
+                            scratch[start..].sort_by(|a, b| a.t.total_cmp(&b.t));
+                            let kept = scratch[start..]
+                                .iter()
+                                .find(|hit| csg.keeps(&spans, i, hit.t, &q.ray))
+                                .copied();
+                            scratch.truncate(start);
+                            kept
+                        }
+                    };
                     if let Some(hit) = kept {
                         q.tmax = hit.t;
                         best = Some(hit);
@@ -601,11 +624,6 @@ impl Object {
     /// surface, in no particular order.
     pub fn all_hits<'a>(&'a self, q: &Query, out: &mut Vec<Hit<'a>>) {
         if self.bounds().is_finite() && q_clip(self.bounds(), q).is_none() {
-            return;
-        }
-        if let Object::Csg(csg) = self
-            && !csg.meets_hull(q)
-        {
             return;
         }
         match self {
@@ -623,20 +641,42 @@ impl Object {
                     }
                 }
             }
+            Object::Csg(csg) if csg.kind == CsgKind::Union => {
+                for child in &csg.children {
+                    child.all_hits(q, out);
+                }
+            }
             Object::Csg(csg) => {
+                let mut spans = ChildSpans::new();
+                if csg.meet(&mut spans, q).is_none() {
+                    return;
+                }
+                spans.complete(&csg.children, q);
                 for (i, child) in csg.children.iter().enumerate() {
                     if !csg.may_keep(i) {
                         break;
                     }
-                    let start = out.len();
-                    child.all_hits(q, out);
-                    if csg.kind == CsgKind::Union {
+                    if let (Object::Leaf(leaf), Some(span)) = (child, spans.span(i)) {
+                        if leaf.visibility.sees(q.kind) {
+                            for r in [span.enter, span.exit] {
+                                if r.t > q.tmin && r.t < q.tmax && csg.keeps(&spans, i, r.t, &q.ray)
+                                {
+                                    out.push(Hit {
+                                        t: r.t,
+                                        leaf,
+                                        part: r.part,
+                                    });
+                                }
+                            }
+                        }
                         continue;
                     }
+                    let start = out.len();
+                    child.all_hits(q, out);
                     let mut kept = start;
                     for k in start..out.len() {
                         let hit = out[k];
-                        if csg.keeps(i, q.ray.at(hit.t)) {
+                        if csg.keeps(&spans, i, hit.t, &q.ray) {
                             out[kept] = hit;
                             kept += 1;
                         }
@@ -655,15 +695,59 @@ impl Csg {
         self.kind != CsgKind::Clip || from == 0
     }
 
-    /// Whether a crossing of child `from` at `p` is on this CSG's surface.
-    fn keeps(&self, from: usize, p: DVec3) -> bool {
-        let others = self.children.iter().enumerate().filter(|(j, _)| *j != from);
+    /// For an intersection or a clip, the stretches of its uninverted leaves along the
+    /// query's ray and where they meet; `None` when the ray meets no surface of the node
+    /// within the query's interval. `Some(None)` for a merge, which has no such meeting.
+    fn meet(&self, spans: &mut ChildSpans, q: &Query) -> Option<Option<Meeting>> {
         match self.kind {
-            CsgKind::Union => true,
-            CsgKind::Merge => others.into_iter().all(|(_, o)| !o.inside(p)),
-            CsgKind::Intersection => others.into_iter().all(|(_, o)| o.inside(p)),
-            CsgKind::Clip => from == 0 && others.into_iter().all(|(_, o)| o.inside(p)),
+            CsgKind::Intersection | CsgKind::Clip => {
+                spans.meet(&self.children, q, self.hull).map(Some)
+            }
+            CsgKind::Union | CsgKind::Merge => Some(None),
         }
+    }
+
+    /// The crossing where the ray enters the meeting of an intersection's uninverted
+    /// convex children, when it is kept (it lies outside the holes and inside the other
+    /// children there): the nearest crossing then, since every crossing the intersection
+    /// keeps lies in the meeting. The other children are tested at that one point, so that
+    /// a ray meeting a face of a drilled cube away from the drills finds none of their
+    /// crossings.
+    fn entry_hit<'a>(
+        &'a self,
+        spans: &ChildSpans,
+        meeting: &Meeting,
+        q: &Query,
+    ) -> Option<Hit<'a>> {
+        let (i, root) = meeting.entry?;
+        let Object::Leaf(leaf) = &self.children[i] else {
+            return None;
+        };
+        let seen = root.t > q.tmin
+            && root.t < q.tmax
+            && root.t < meeting.hi
+            && self.may_keep(i)
+            && leaf.visibility.sees(q.kind);
+        (seen && self.keeps(spans, i, root.t, &q.ray)).then_some(Hit {
+            t: root.t,
+            leaf,
+            part: root.part,
+        })
+    }
+
+    /// Whether a crossing of child `from` at parameter `t` of the ray is on this CSG's
+    /// surface.
+    fn keeps(&self, spans: &ChildSpans, from: usize, t: f64, ray: &Ray) -> bool {
+        // Whether the crossing must lie inside the other children or outside them all.
+        let inside = match self.kind {
+            CsgKind::Union => return true,
+            CsgKind::Merge => false,
+            CsgKind::Intersection => true,
+            CsgKind::Clip if from == 0 => true,
+            CsgKind::Clip => return false,
+        };
+        (0..self.children.len())
+            .all(|j| j == from || spans.inside(&self.children, j, t, ray) == inside)
     }
 }
 
@@ -786,6 +870,111 @@ mod tests {
             hull("intersection { box { -1, 1 } cylinder { -y, y, 1.2 } }"),
             None
         );
+    }
+
+    /// Every crossing of the object's surface along the ray, found the plain way: each
+    /// leaf's crossings, kept where point tests put them inside (or, for a merge, outside)
+    /// the other children.
+    fn crossings_by_point_tests(object: &Object, ray: &Ray) -> Vec<f64> {
+        match object {
+            Object::Leaf(leaf) => leaf.roots(ray).as_slice().iter().map(|r| r.t).collect(),
+            Object::Csg(csg) => {
+                let mut kept = Vec::new();
+                for (i, child) in csg.children.iter().enumerate() {
+                    if csg.kind == CsgKind::Clip && i > 0 {
+                        break;
+                    }
+                    for t in crossings_by_point_tests(child, ray) {
+                        let p = ray.at(t);
+                        let mut others = (0..csg.children.len())
+                            .filter(|&j| j != i)
+                            .map(|j| &csg.children[j]);
+                        let keep = match csg.kind {
+                            CsgKind::Union => true,
+                            CsgKind::Merge => others.all(|o| !o.inside(p)),
+                            CsgKind::Intersection | CsgKind::Clip => others.all(|o| o.inside(p)),
+                        };
+                        if keep {
+                            kept.push(t);
+                        }
+                    }
+                }
+                kept
+            }
+        }
+    }
+
+    /// The nearest crossing found from the children's stretches is the one point tests
+    /// keep, for differences, intersections with planes, merges, clips by convex and other
+    /// shapes, and nested nodes, along rays from outside and from inside the objects.
+    #[test]
+    fn stretches_find_the_crossings_point_tests_keep() {
+        let scenes = [
+            "difference {
+               intersection { box { -1, 1 } sphere { 0, 1.32 } }
+               union { cylinder { -1.2*x, 1.2*x, 0.42 } cylinder { -1.2*y, 1.2*y, 0.42 }
+                       cylinder { -1.2*z, 1.2*z, 0.42 } }
+             }",
+            "intersection { sphere { 0, 1 } plane { y, 0.2 } plane { -x, 0.3 } }",
+            "merge { sphere { 0, 1 } box { <0, -0.5, -0.5>, <1.5, 0.5, 0.5> }
+                     cone { -y, 0.6, 1.5*y, 0.1 } }",
+            "torus { 1, 0.3 clipped_by { box { <-2, -1, -2>, <0.5, 1, 2> } } }",
+            "box { -1, 1 clipped_by { sphere { 0, 1.2 } plane { z, 0.4 inverse } } }",
+            "intersection { torus { 1, 0.4 } sphere { <1, 0, 0>, 0.6 } rotate 20*x }",
+            "difference { sphere { 0, 1 } merge { box { -0.3, 2 } sphere { -x, 0.5 } }
+                          cylinder { -2*z, 2*z, 0.2 open } }",
+        ];
+        let mut compared = 0;
+        for source in scenes {
+            let world = crate::build::world_of_source(source);
+            let object = world.bvh.objects().next().expect("one object");
+            for k in 0..400 {
+                let a = k as f64 * 0.61;
+                let origin = if k % 5 == 0 {
+                    DVec3::new(0.1 * a.sin(), 0.05, 0.1 * a.cos())
+                } else {
+                    DVec3::new(3.0 * a.cos(), 1.5 * (a * 0.7).sin(), -3.0 * a.sin())
+                };
+                let target =
+                    DVec3::new(0.6 * (a * 1.3).sin(), 0.5 * (a * 2.1).cos(), 0.4 * a.cos());
+                let ray = Ray::new(origin, target - origin);
+                let mut expected: Vec<f64> = crossings_by_point_tests(object, &ray)
+                    .into_iter()
+                    .filter(|&t| t > 1e-6)
+                    .collect();
+                expected.sort_by(f64::total_cmp);
+                // A crossing a hair from another surface may be kept either way.
+                let all: Vec<f64> = object_roots(object, &ray);
+                if expected
+                    .first()
+                    .is_some_and(|&t| all.iter().any(|&u| u != t && (u - t).abs() < 1e-7))
+                {
+                    continue;
+                }
+                let q = Query::new(ray, RayKind::Primary, 1e-6, f64::INFINITY);
+                let found = object.nearest(&q, &mut Vec::new()).map(|hit| hit.t);
+                assert_eq!(found, expected.first().copied(), "{source} ray {k}");
+                let mut hits = Vec::new();
+                object.all_hits(&q, &mut hits);
+                let mut all_hits: Vec<f64> = hits.iter().map(|hit| hit.t).collect();
+                all_hits.sort_by(f64::total_cmp);
+                assert_eq!(all_hits, expected, "{source} ray {k}");
+                compared += usize::from(found.is_some());
+            }
+        }
+        assert!(compared > 1000, "rays meet the objects: {compared}");
+    }
+
+    /// Every crossing of every leaf of the object along the ray.
+    fn object_roots(object: &Object, ray: &Ray) -> Vec<f64> {
+        match object {
+            Object::Leaf(leaf) => leaf.roots(ray).as_slice().iter().map(|r| r.t).collect(),
+            Object::Csg(csg) => csg
+                .children
+                .iter()
+                .flat_map(|c| object_roots(c, ray))
+                .collect(),
+        }
     }
 
     /// Scenes hold up to a hundred thousand objects and more; an object stays a few

@@ -24,7 +24,7 @@ impl Plane {
         super::nearest_in(&[self.crossing(ray)?], tmin, tmax).map(|t| Root { t, part: 0 })
     }
 
-    fn crossing(&self, ray: &Ray) -> Option<f64> {
+    pub(super) fn crossing(&self, ray: &Ray) -> Option<f64> {
         let denom = self.normal.dot(ray.direction);
         (denom != 0.0).then(|| (self.distance - self.normal.dot(ray.origin)) / denom)
     }
