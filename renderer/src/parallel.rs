@@ -13,3 +13,18 @@ pub fn map_indices<T: Send>(count: usize, f: impl Fn(usize) -> T + Sync + Send) 
         (0..count).map(f).collect()
     }
 }
+
+/// Runs `a` and `b`, at once where threads exist, and returns both results.
+pub fn join<A: Send, B: Send>(
+    a: impl FnOnce() -> A + Send,
+    b: impl FnOnce() -> B + Send,
+) -> (A, B) {
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        rayon::join(a, b)
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        (a(), b())
+    }
+}

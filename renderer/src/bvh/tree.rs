@@ -22,6 +22,10 @@ const HEURISTIC_DEPTH: usize = 64;
 /// The deepest a node may be.
 const MAX_DEPTH: usize = 120;
 
+/// Nodes over at least this many items build their two subtrees at once, where threads
+/// exist; smaller ones are not worth a thread's start.
+const PARALLEL_ITEMS: usize = 4096;
+
 /// The traversal stack of a tree up to this deep lives in the traversal's frame; a deeper
 /// tree's is allocated. The stack holds one entry per level and one more, and a frame's
 /// array is zeroed on every traversal, so it is no larger than most trees need.
@@ -30,7 +34,7 @@ const INLINE_STACK: usize = 48;
 /// The stack of a shallow tree (the objects of most scenes), cheaper still to zero.
 const SMALL_STACK: usize = 16;
 
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 struct Node {
     bounds: Aabb,
     /// For a leaf, its first item; for an inner node, the second child's index (the first
@@ -47,7 +51,7 @@ struct Node {
 }
 
 /// The flattened hierarchy.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct Tree {
     nodes: Vec<Node>,
     /// The deepest node's level, the root's being 0.
@@ -249,10 +253,43 @@ fn build_node(
         axis: axis as u8,
         kinds: u8::MAX,
     });
+    let parallel = items.len() >= PARALLEL_ITEMS;
     let (near, far) = items.split_at_mut(left);
-    build_node(near, offset, depth + 1, max_leaf, nodes, deepest);
-    nodes[here].index = nodes.len() as u32;
-    build_node(far, offset + left, depth + 1, max_leaf, nodes, deepest);
+    if parallel {
+        let ((near, near_depth), (far, far_depth)) = crate::parallel::join(
+            || subtree(near, offset, depth + 1, max_leaf),
+            || subtree(far, offset + left, depth + 1, max_leaf),
+        );
+        append(nodes, near);
+        nodes[here].index = nodes.len() as u32;
+        append(nodes, far);
+        *deepest = (*deepest).max(near_depth).max(far_depth);
+    } else {
+        build_node(near, offset, depth + 1, max_leaf, nodes, deepest);
+        nodes[here].index = nodes.len() as u32;
+        build_node(far, offset + left, depth + 1, max_leaf, nodes, deepest);
+    }
+}
+
+/// The nodes of the subtree over `items` on their own, numbered from 0, and its deepest
+/// level: the same nodes [`build_node`] appends, up to the numbering.
+fn subtree(items: &mut [Item], offset: usize, depth: usize, max_leaf: usize) -> (Vec<Node>, usize) {
+    let mut nodes = Vec::with_capacity(2 * items.len() / max_leaf);
+    let mut deepest = depth;
+    build_node(items, offset, depth, max_leaf, &mut nodes, &mut deepest);
+    (nodes, deepest)
+}
+
+/// Appends a subtree numbered from 0 to `nodes`, renumbering its inner nodes' links to
+/// their second children; leaves keep their items' places, which are already final.
+fn append(nodes: &mut Vec<Node>, subtree: Vec<Node>) {
+    let base = nodes.len() as u32;
+    nodes.extend(subtree.into_iter().map(|mut node| {
+        if node.count == 0 {
+            node.index += base;
+        }
+        node
+    }));
 }
 
 /// Chooses how to divide `items` (within `bounds`, their centres within `centres`),
@@ -566,5 +603,45 @@ mod tests {
             f64::NEG_INFINITY
         });
         assert_eq!(leaves, 1);
+    }
+
+    /// Where the subtree at `at` ends, checking that every inner node's second child
+    /// follows its first child's subtree, as a build one node after another lays it out,
+    /// and that leaves take their items in order from `next`.
+    fn preorder_end(tree: &Tree, at: usize, next: &mut u32) -> usize {
+        let node = tree.nodes[at];
+        if node.count > 0 {
+            assert_eq!(node.index, *next, "leaf {at}");
+            *next += node.count;
+            return at + 1;
+        }
+        let first_end = preorder_end(tree, at + 1, next);
+        assert_eq!(node.index as usize, first_end, "node {at}");
+        preorder_end(tree, first_end, next)
+    }
+
+    #[test]
+    fn a_large_tree_built_in_parallel_is_the_tree_built_in_order() {
+        // Boxes scattered by a hash, many more than a node builds its subtrees at once for.
+        let boxes: Vec<Aabb> = (0..20_000u64)
+            .map(|i| {
+                let h = i.wrapping_mul(0x9e37_79b9_7f4a_7c15);
+                let coordinate = |shift: u32| ((h >> shift) & 0xffff) as f64 / 655.36;
+                unit_box(DVec3::new(coordinate(0), coordinate(16), coordinate(32)))
+            })
+            .collect();
+        let build_on = |threads: usize| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .expect("a thread pool")
+                .install(|| Tree::build(&boxes, 2))
+        };
+        let (tree, order) = build_on(1);
+        let mut next = 0;
+        assert_eq!(preorder_end(&tree, 0, &mut next), tree.nodes.len());
+        assert_eq!(next as usize, boxes.len());
+        assert!(tree.depth > 10, "{}", tree.depth);
+        assert!(build_on(4) == (tree, order));
     }
 }
