@@ -408,6 +408,25 @@ fn blend_value(kind: &PatternKind, p: DVec3) -> f64 {
     }
 }
 
+/// `x.floor()`, through a conversion to an integer and back where `x` is small enough:
+/// on targets without a rounding instruction (x86-64's baseline) `f64::floor` is a
+/// library call, and the tiling and pavement patterns need two per value.
+fn floor(x: f64) -> f64 {
+    // From 2^52 on every float is whole; NaN goes to `f64::floor` too.
+    const WHOLE_FROM: f64 = 4_503_599_627_370_496.0;
+    if x.abs() < WHOLE_FROM {
+        // The sign keeps -0.0 as it is.
+        let truncated = (x as i64 as f64).copysign(x);
+        if truncated > x {
+            truncated - 1.0
+        } else {
+            truncated
+        }
+    } else {
+        x.floor()
+    }
+}
+
 /// Frequency and phase, then the wave type; the result lies in 0..1.
 fn shape(pattern: &Pattern, raw: f64) -> f64 {
     // The evaluator gives marble and wood their triangle wave unless the scene says
@@ -449,6 +468,36 @@ fn shape(pattern: &Pattern, raw: f64) -> f64 {
 mod tests {
     use super::*;
     use crate::scene::Transform;
+
+    #[test]
+    fn floor_is_f64_floor() {
+        let whole = 4_503_599_627_370_496.0;
+        for x in [
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.0,
+            -1.0,
+            2.75,
+            -2.75,
+            1e-300,
+            -1e-300,
+            1e15 + 0.5,
+            -1e15 - 0.5,
+            whole - 0.5,
+            -whole + 0.5,
+            whole,
+            -whole,
+            1e300,
+            -1e300,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        ] {
+            assert_eq!(floor(x).to_bits(), x.floor().to_bits(), "{x}");
+        }
+        assert!(floor(f64::NAN).is_nan());
+    }
 
     fn value(kind: PatternKind, p: DVec3) -> PatternValue {
         evaluate(&Pattern::new(kind), p)

@@ -8,17 +8,23 @@
 //! tile among a short list: the cell is cut into a grid, and each grid square lists the
 //! few tiles that reach into it.
 
+use super::floor;
 use glam::{DVec2, DVec3};
 use std::ops::Range;
 use std::sync::OnceLock;
 
-/// The tilings POV-Ray numbers 1 to 27 that are implemented: 1 to 24.
+/// How many tilings `tilings.txt` holds: of POV-Ray's 1 to 27, 1 to 24 are
+/// implemented.
+const TILINGS: usize = 24;
+
+/// Whether POV-Ray's tiling `number` is implemented.
 pub fn supported(number: u8) -> bool {
-    (1..=tilings().len()).contains(&usize::from(number))
+    (1..=TILINGS).contains(&usize::from(number))
 }
 
 /// An edge's line scaled by its ramp width: the ramp is `normal . p - offset`, 0 on the
 /// edge and 1 a ramp width inside.
+#[derive(Clone)]
 struct Edge {
     normal: DVec2,
     offset: f64,
@@ -56,27 +62,28 @@ impl Tile {
 const GRID: usize = 16;
 
 /// A tiling ready to evaluate: its period, the dual basis that finds a point's place in
-/// the period, and every copy of its tiles that overlaps the period cell spanned by `a`
-/// and `b` from the origin, with for each square of the cell's grid (row by row in the
-/// `b` direction) the range of `candidates` that lists the tiles reaching into it.
+/// the period cell spanned by `a` and `b` from the origin, and for each square of the
+/// cell's grid (row by row in the `b` direction) the range of `candidates` that lists the
+/// copies of its tiles reaching into it, each with only those of its edges that matter
+/// there.
 struct Tiling {
     types: f64,
     a: DVec2,
     b: DVec2,
     dual_a: DVec2,
     dual_b: DVec2,
-    tiles: Vec<Tile>,
     squares: Vec<Range<u32>>,
-    candidates: Vec<u16>,
+    candidates: Vec<Tile>,
 }
 
-fn tilings() -> &'static [Tiling] {
-    static TILINGS: OnceLock<Vec<Tiling>> = OnceLock::new();
-    TILINGS.get_or_init(|| {
-        layouts(include_str!("tilings.txt"))
-            .iter()
-            .map(Tiling::new)
-            .collect()
+/// Tiling `number` (which must be `supported`), made ready the first time a scene uses
+/// it: a scene uses few of them.
+fn tiling(number: u8) -> &'static Tiling {
+    static READY: [OnceLock<Tiling>; TILINGS] = [const { OnceLock::new() }; TILINGS];
+    static LAYOUTS: OnceLock<Vec<Layout>> = OnceLock::new();
+    let index = usize::from(number) - 1;
+    READY[index].get_or_init(|| {
+        Tiling::new(&LAYOUTS.get_or_init(|| layouts(include_str!("tilings.txt")))[index])
     })
 }
 
@@ -135,10 +142,10 @@ fn layouts(text: &str) -> Vec<Layout> {
 /// The value of `tiling number` at `p` (y is ignored), in 0..=1. `number` must be
 /// `supported`.
 pub fn value(number: u8, p: DVec3) -> f64 {
-    let tiling = &tilings()[usize::from(number) - 1];
+    let tiling = tiling(number);
     let q = DVec2::new(p.x, p.z);
     let (u, v) = (tiling.dual_a.dot(q), tiling.dual_b.dot(q));
-    tiling.value_in_cell(u - u.floor(), v - v.floor())
+    tiling.value_in_cell(u - floor(u), v - floor(v))
 }
 
 /// The grid square along one side of the period cell that holds the fraction `t` of it
@@ -153,8 +160,7 @@ impl Tiling {
     /// every tile would find.
     fn value_in_cell(&self, u: f64, v: f64) -> f64 {
         let Range { start, end } = self.squares[grid_index(v) * GRID + grid_index(u)].clone();
-        let candidates = self.candidates[start as usize..end as usize].iter();
-        let tiles = candidates.map(|&index| &self.tiles[usize::from(index)]);
+        let tiles = self.candidates[start as usize..end as usize].iter();
         self.value_among(tiles, self.a * u + self.b * v)
     }
 
@@ -182,68 +188,87 @@ impl Tiling {
     fn new(layout: &Layout) -> Tiling {
         let (a, b) = (layout.a, layout.b);
         let det = a.perp_dot(b);
-        let cell = [DVec2::ZERO, a, a + b, b];
         let dual_a = DVec2::new(b.y, -b.x) / det;
         let dual_b = DVec2::new(-a.y, a.x) / det;
-        let mut tiles = Vec::new();
-        // Each tile's extent in the cell's own coordinates (fractions of `a` and `b`),
-        // where the grid squares it may reach are a rectangle.
-        let mut extents = Vec::new();
-        for (kind, edges) in &layout.tiles {
-            let lines: Vec<(DVec2, f64, f64)> = edges
-                .iter()
-                .map(|&(angle, offset, width)| {
-                    let (sin, cos) = angle.to_radians().sin_cos();
-                    (DVec2::new(cos, sin), offset, width)
-                })
-                .collect();
-            let corners = corners(&lines);
-            for i in -2..=2 {
-                for j in -2..=2 {
-                    let shift = a * f64::from(i) + b * f64::from(j);
-                    let moved: Vec<DVec2> = corners.iter().map(|c| *c + shift).collect();
-                    if !overlaps(&moved, &cell) {
-                        continue;
-                    }
-                    extents.push(moved.iter().fold(
-                        (DVec2::INFINITY, DVec2::NEG_INFINITY),
-                        |(lo, hi), c| {
-                            let uv = DVec2::new(dual_a.dot(*c), dual_b.dot(*c));
-                            (lo.min(uv), hi.max(uv))
-                        },
-                    ));
-                    tiles.push(Tile {
-                        kind: f64::from(*kind),
-                        edges: lines
-                            .iter()
-                            .map(|&(normal, offset, width)| Edge {
-                                normal: normal / width,
-                                offset: (offset + normal.dot(shift)) / width,
-                            })
-                            .collect(),
-                    });
-                }
-            }
-        }
-        let (squares, candidates) = grid_candidates(&extents);
+        let (tiles, extents) = copies(layout, dual_a, dual_b);
+        let (squares, candidates) = grid_candidates(&extents, &tiles, a, b);
         Tiling {
             types: f64::from(layout.types),
             a,
             b,
             dual_a,
             dual_b,
-            tiles,
             squares,
             candidates,
         }
     }
 }
 
+/// Every copy of the layout's tiles that overlaps the period cell spanned by its `a` and
+/// `b` from the origin, and each one's extent in the cell's own coordinates (fractions of
+/// `a` and `b`, as the dual basis gives them).
+fn copies(layout: &Layout, dual_a: DVec2, dual_b: DVec2) -> (Vec<Tile>, Vec<(DVec2, DVec2)>) {
+    let (a, b) = (layout.a, layout.b);
+    let cell = [DVec2::ZERO, a, a + b, b];
+    let mut tiles = Vec::new();
+    // Each tile's extent in the cell's own coordinates (fractions of `a` and `b`),
+    // where the grid squares it may reach are a rectangle.
+    let mut extents = Vec::new();
+    for (kind, edges) in &layout.tiles {
+        let lines: Vec<(DVec2, f64, f64)> = edges
+            .iter()
+            .map(|&(angle, offset, width)| {
+                let (sin, cos) = angle.to_radians().sin_cos();
+                (DVec2::new(cos, sin), offset, width)
+            })
+            .collect();
+        let corners = corners(&lines);
+        for i in -2..=2 {
+            for j in -2..=2 {
+                let shift = a * f64::from(i) + b * f64::from(j);
+                let moved: Vec<DVec2> = corners.iter().map(|c| *c + shift).collect();
+                if !overlaps(&moved, &cell) {
+                    continue;
+                }
+                extents.push(moved.iter().fold(
+                    (DVec2::INFINITY, DVec2::NEG_INFINITY),
+                    |(lo, hi), c| {
+                        let uv = DVec2::new(dual_a.dot(*c), dual_b.dot(*c));
+                        (lo.min(uv), hi.max(uv))
+                    },
+                ));
+                tiles.push(Tile {
+                    kind: f64::from(*kind),
+                    edges: lines
+                        .iter()
+                        .map(|&(normal, offset, width)| Edge {
+                            normal: normal / width,
+                            offset: (offset + normal.dot(shift)) / width,
+                        })
+                        .collect(),
+                });
+            }
+        }
+    }
+    (tiles, extents)
+}
+
 /// For each grid square of the period cell (row by row in `v`), the range of the returned
 /// list that names, in order, the tiles whose `extents` (lowest and highest `u`, `v`)
 /// reach into it. Extents are widened by a margin far above rounding, so a point that
 /// rounding moves across a square's side still finds its tile.
-fn grid_candidates(extents: &[(DVec2, DVec2)]) -> (Vec<Range<u32>>, Vec<u16>) {
+///
+/// Each listed tile keeps only the edges whose ramp falls below 1 somewhere in the square
+/// (the grid square is the parallelogram `u a + v b` over its range of `u` and `v`, and a
+/// ramp, linear, is least at one of its corners): an edge whose ramp is 1 or more all
+/// over it neither leaves a point outside the tile nor lowers the value, which takes the
+/// least ramp up to 1.
+fn grid_candidates(
+    extents: &[(DVec2, DVec2)],
+    tiles: &[Tile],
+    a: DVec2,
+    b: DVec2,
+) -> (Vec<Range<u32>>, Vec<Tile>) {
     const MARGIN: f64 = 1e-6;
     let squares_of = |lo: f64, hi: f64| {
         let first = ((lo - MARGIN) * GRID as f64).floor().max(0.0) as usize;
@@ -261,9 +286,23 @@ fn grid_candidates(extents: &[(DVec2, DVec2)]) -> (Vec<Range<u32>>, Vec<u16>) {
     let mut candidates = Vec::new();
     let squares = lists
         .into_iter()
-        .map(|list| {
+        .enumerate()
+        .map(|(square, list)| {
+            let (i, j) = (square % GRID, square / GRID);
+            let corners = [(i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1)]
+                .map(|(i, j)| a * (i as f64 / GRID as f64) + b * (j as f64 / GRID as f64));
             let start = candidates.len() as u32;
-            candidates.extend(list);
+            candidates.extend(list.into_iter().map(|index: u16| {
+                let tile = &tiles[usize::from(index)];
+                let edges = tile.edges.iter().filter(|e| {
+                    let least = corners.iter().map(|c| e.normal.dot(*c) - e.offset);
+                    least.fold(f64::INFINITY, f64::min) < 1.0 + MARGIN
+                });
+                Tile {
+                    kind: tile.kind,
+                    edges: edges.cloned().collect(),
+                }
+            }));
             start..candidates.len() as u32
         })
         .collect();
@@ -314,6 +353,14 @@ mod tests {
         value(number, DVec3::new(x, 7.0, z))
     }
 
+    /// Every copy of tiling `number`'s tiles that overlaps its period cell, with all its
+    /// edges.
+    fn all_tiles(number: u8) -> Vec<Tile> {
+        let tiling = tiling(number);
+        let layout = &layouts(include_str!("tilings.txt"))[usize::from(number) - 1];
+        copies(layout, tiling.dual_a, tiling.dual_b).0
+    }
+
     fn assert_close(ours: f64, povray: f64) {
         assert!((ours - povray).abs() < 1e-6, "{ours} is not {povray}");
     }
@@ -340,34 +387,33 @@ mod tests {
     /// which must lie inside exactly one tile).
     #[test]
     fn tiles_cover_each_period_once() {
-        for (index, tiling) in tilings().iter().enumerate() {
+        for number in 1..=TILINGS as u8 {
+            let (tiling, tiles) = (tiling(number), all_tiles(number));
             for i in 0..40 {
                 for j in 0..40 {
                     let q = tiling.a * ((f64::from(i) + 0.37) / 40.0)
                         + tiling.b * ((f64::from(j) + 0.61) / 40.0);
-                    let holding = tiling
-                        .tiles
-                        .iter()
-                        .filter(|tile| tile.ramp(q) > 1e-9)
-                        .count();
-                    assert_eq!(holding, 1, "tiling {} at {q}", index + 1);
+                    let holding = tiles.iter().filter(|tile| tile.ramp(q) > 1e-9).count();
+                    assert_eq!(holding, 1, "tiling {number} at {q}");
                 }
             }
         }
     }
 
-    /// Each grid square's candidates include every tile that holds a point of the square:
-    /// points on a fine lattice, the squares' own sides among them, find their tile among
-    /// the candidates exactly as a search of every tile does.
+    /// Each grid square's candidates include every tile that holds a point of the square,
+    /// with every edge that matters there: points on a fine lattice, the squares' own
+    /// sides among them, get exactly the value a search of every tile with all its edges
+    /// gives.
     #[test]
     fn grid_squares_list_every_tile_that_reaches_them() {
         let steps = GRID * 12;
-        for tiling in tilings() {
+        for number in 1..=TILINGS as u8 {
+            let (tiling, tiles) = (tiling(number), all_tiles(number));
             for i in 0..=steps {
                 for j in 0..=steps {
                     let (u, v) = (i as f64 / steps as f64, j as f64 / steps as f64);
                     let q = tiling.a * u + tiling.b * v;
-                    let everywhere = tiling.value_among(tiling.tiles.iter(), q);
+                    let everywhere = tiling.value_among(tiles.iter(), q);
                     assert_eq!(tiling.value_in_cell(u, v), everywhere, "at {q}");
                 }
             }
@@ -377,7 +423,7 @@ mod tests {
     #[test]
     fn every_tiling_of_the_table_is_read() {
         let layouts = layouts(include_str!("tilings.txt"));
-        assert_eq!(layouts.len(), 24);
+        assert_eq!(layouts.len(), TILINGS);
         for (index, layout) in layouts.iter().enumerate() {
             assert!(!layout.tiles.is_empty(), "tiling {}", index + 1);
             let kinds = layout.tiles.iter().map(|(kind, _)| *kind).max();
@@ -388,7 +434,7 @@ mod tests {
     #[test]
     fn the_pattern_repeats_with_its_period() {
         for number in 1..=24 {
-            let tiling = &tilings()[usize::from(number) - 1];
+            let tiling = tiling(number);
             let p = DVec2::new(0.313, -0.271);
             let q = p + tiling.a * 3.0 - tiling.b * 2.0;
             assert_close(at(number, p.x, p.y), at(number, q.x, q.y));
