@@ -19,6 +19,7 @@
 //! vertex whose `i - k` is 1 modulo 3, so that the hexagon of side 1 centred at (1, 0)
 //! has its corners at (0, 0) and (2, 0), as in POV-Ray.
 
+use super::floor;
 use crate::scene::Pavement;
 use glam::{DVec2, DVec3};
 use std::sync::OnceLock;
@@ -76,7 +77,8 @@ enum Lattice {
 
 impl Lattice {
     /// The signed distances of a point at `o` from a vertex to the lattice lines through
-    /// it, one per direction of the first half of `steps` (positive to the left of it).
+    /// it, one per direction of the first half of `steps` (positive to the left of it);
+    /// a square vertex has two lines, and the third distance is 0.
     fn across(self, o: DVec2) -> [f64; 3] {
         match self {
             Lattice::Square => [o.y, -o.x, 0.0],
@@ -118,55 +120,196 @@ impl Lattice {
         }
     }
 
-    /// The corners of the cell holding `q`, counterclockwise, as lattice indices, the
-    /// lattice direction from each corner to the next, and how many corners there are.
-    fn cell(self, q: DVec2) -> ([(i32, i32); 6], [u8; 6], usize) {
-        let mut corners = [(0, 0); 6];
+    /// Where `q` is among the squares or triangles of the lattice: the first vertex `(i,
+    /// k)` of the square (its lower left corner) or triangle (the corner from which it
+    /// points up, or the one left of where it points down), and whether it points down.
+    fn locate(self, q: DVec2) -> ((i32, i32), bool) {
         if self == Lattice::Square {
-            let (i, k) = (q.x.floor() as i32, q.y.floor() as i32);
-            corners[..4].copy_from_slice(&[(i, k), (i + 1, k), (i + 1, k + 1), (i, k + 1)]);
-            return (corners, [0, 1, 2, 3, 0, 0], 4);
+            return ((floor(q.x) as i32, floor(q.y) as i32), false);
         }
         let b = q.y / ROOT3_2;
         let a = q.x - 0.5 * b;
-        let (i, k) = (a.floor() as i32, b.floor() as i32);
-        let (triangle, directions) = if (a - a.floor()) + (b - b.floor()) < 1.0 {
-            ([(i, k), (i + 1, k), (i, k + 1)], [0, 2, 4, 0, 0, 0])
-        } else {
-            ([(i + 1, k), (i + 1, k + 1), (i, k + 1)], [1, 3, 5, 0, 0, 0])
-        };
-        if self == Lattice::Triangle {
-            corners[..3].copy_from_slice(&triangle);
-            return (corners, directions, 3);
+        let (i, k) = (floor(a), floor(b));
+        ((i as i32, k as i32), (a - i) + (b - k) >= 1.0)
+    }
+
+    /// The corners of the cell that holds the square or triangle whose first vertex is
+    /// `(i, k)` (see `locate`), counterclockwise. A hexagon is the six triangles round a vertex whose
+    /// `i - k` is 1 modulo 3.
+    fn corners(self, (i, k): (i32, i32), down: bool) -> Vec<(i32, i32)> {
+        match (self, down) {
+            (Lattice::Square, _) => vec![(i, k), (i + 1, k), (i + 1, k + 1), (i, k + 1)],
+            (Lattice::Triangle, false) => vec![(i, k), (i + 1, k), (i, k + 1)],
+            (Lattice::Triangle, true) => vec![(i + 1, k), (i + 1, k + 1), (i, k + 1)],
+            (Lattice::Hexagon, _) => {
+                let triangle = Lattice::Triangle.corners((i, k), down);
+                let (ci, ck) = triangle
+                    .into_iter()
+                    .find(|(i, k)| (i - k).rem_euclid(3) == 1)
+                    .unwrap_or((i, k));
+                self.steps()
+                    .iter()
+                    .map(|(di, dk)| (ci + di, ck + dk))
+                    .collect()
+            }
         }
-        // Of a triangle's three corners, one each has `i - k` 0, 1 and 2 modulo 3.
-        let (ci, ck) = triangle
-            .into_iter()
-            .find(|(i, k)| (i - k).rem_euclid(3) == 1)
-            .unwrap_or(triangle[0]);
-        for (corner, (di, dk)) in corners.iter_mut().zip(self.steps()) {
-            *corner = (ci + di, ck + dk);
-        }
-        (corners, [2, 3, 4, 5, 0, 1], 6)
     }
 }
 
-/// One layout over its period: which lattice edges are tile edges.
+/// One layout over its period, as what each corner of each cell of the period adds to
+/// a point's distance from the tile edges.
 struct Layout {
     lattice: Lattice,
     /// The period in lattice indices along i and along k.
     period: (i32, i32),
-    /// For each vertex of the period, k major, the lattice directions (bit `d` for
-    /// direction `d`) in which a tile edge leaves it.
-    masks: Vec<u8>,
-    /// The corner rule for each mask of tile edges and each sector round the vertex,
-    /// worked out once: a point's value needs one per corner of its cell.
-    rules: Vec<[CornerRule; 6]>,
+    /// How many corners a cell has.
+    corners: usize,
+    /// For each square or triangle of the period (numbered by its first vertex, k major,
+    /// a triangle pointing down after the one pointing up from the same vertex), the
+    /// terms of its cell's corners, `corners` of them.
+    terms: Vec<CornerTerms>,
+}
+
+/// What a corner of a cell adds to the distance of a point in a square or triangle of
+/// it, which lies in one sector round the corner: the distances to some of the lattice
+/// lines through the corner (the cell's edge to the next corner where it is a tile edge,
+/// and the tile edges either side of the sector where the tile's angle here is at most
+/// a half turn), or, round a notch (an angle over a half turn), the largest distance to
+/// those lines (so that the ramp turns sharp corners round a notch too, a hexagon's round
+/// the tip of a 60 degree notch).
+///
+/// The terms are added to the distances rather than chosen by branches, which a point's
+/// cell would make unpredictable.
+struct CornerTerms {
+    /// The corner, in lattice steps from the square's or triangle's first vertex.
+    offset: (i32, i32),
+    /// For each lattice line through the corner (as `Lattice::across` gives them), then
+    /// for the farthest of them, 0 where its distance counts and infinity where not.
+    skips: [f64; 4],
+}
+
+impl Layout {
+    /// The layout whose edge flags are given per edge class (the first half of the
+    /// lattice directions), one per vertex of the period, k major.
+    fn new(lattice: Lattice, period: (i32, i32), edges: &[Vec<bool>]) -> Layout {
+        let (p, q) = period;
+        let steps = lattice.steps();
+        let half = steps.len() / 2;
+        let flag = |class: usize, (i, k): (i32, i32)| {
+            edges[class][(k.rem_euclid(q) * p + i.rem_euclid(p)) as usize]
+        };
+        // For each vertex of the period, k major, the directions (bit `d` for direction
+        // `d`) in which tile edges leave it.
+        let masks: Vec<u8> = (0..q)
+            .flat_map(|k| (0..p).map(move |i| (i, k)))
+            .map(|(i, k)| {
+                (0..steps.len())
+                    .filter(|&d| {
+                        if d < half {
+                            flag(d, (i, k))
+                        } else {
+                            let (di, dk) = steps[d];
+                            flag(d - half, (i + di, k + dk))
+                        }
+                    })
+                    .fold(0u8, |mask, d| mask | 1 << d)
+            })
+            .collect();
+        let mask = |(i, k): (i32, i32)| masks[(k.rem_euclid(q) * p + i.rem_euclid(p)) as usize];
+        let shapes: &[bool] = match lattice {
+            Lattice::Square => &[false],
+            _ => &[false, true],
+        };
+        let mut terms = Vec::new();
+        for k in 0..q {
+            for i in 0..p {
+                for &down in shapes {
+                    // The square's or triangle's centre tells each corner's sector.
+                    let third = if down { 2.0 / 3.0 } else { 1.0 / 3.0 };
+                    let centre = match lattice {
+                        Lattice::Square => DVec2::new(f64::from(i) + 0.5, f64::from(k) + 0.5),
+                        _ => {
+                            let (a, b) = (f64::from(i) + third, f64::from(k) + third);
+                            DVec2::new(a + 0.5 * b, ROOT3_2 * b)
+                        }
+                    };
+                    let corners = lattice.corners((i, k), down);
+                    for (n, &corner) in corners.iter().enumerate() {
+                        let edges = mask(corner);
+                        let mut counts = [false; 4];
+                        let across = lattice.across(centre - lattice.position(corner));
+                        let rule = CornerRule::new(steps.len(), edges, lattice.sector(across));
+                        match rule.angle {
+                            // Where no tile edge leaves a vertex, it has no cell edge and
+                            // no tile corner, and nothing counts.
+                            _ if edges == 0 => {}
+                            std::cmp::Ordering::Less => {
+                                counts[usize::from(rule.a)] = true;
+                                counts[usize::from(rule.b)] = true;
+                            }
+                            std::cmp::Ordering::Equal => counts[usize::from(rule.a)] = true,
+                            std::cmp::Ordering::Greater => counts[3] = true,
+                        }
+                        // The cell's own edge from this corner to the next.
+                        let next = corners[(n + 1) % corners.len()];
+                        let step = (next.0 - corner.0, next.1 - corner.1);
+                        if let Some(d) = steps.iter().position(|&s| s == step)
+                            && edges >> d & 1 != 0
+                        {
+                            counts[d % half] = true;
+                        }
+                        terms.push(CornerTerms {
+                            offset: (corner.0 - i, corner.1 - k),
+                            skips: counts.map(|c| if c { 0.0 } else { f64::INFINITY }),
+                        });
+                    }
+                }
+            }
+        }
+        Layout {
+            lattice,
+            period,
+            corners: lattice.corners((0, 0), false).len(),
+            terms,
+        }
+    }
+
+    /// The distance from `q` to the tile's edges as the ramp counts it, where it is
+    /// under `reach`.
+    fn distance(&self, q: DVec2, reach: f64) -> f64 {
+        let ((i, k), down) = self.lattice.locate(q);
+        let (p, pk) = self.period;
+        let place = (k.rem_euclid(pk) * p + i.rem_euclid(p)) as usize;
+        let cell = match self.lattice {
+            Lattice::Square => place,
+            _ => 2 * place + usize::from(down),
+        };
+        // No distance is NaN (the point is finite), so the least and the greatest of two
+        // are plain comparisons.
+        let least = |a: f64, b: f64| if b < a { b } else { a };
+        let greatest = |a: f64, b: f64| if b > a { b } else { a };
+        let mut nearest = reach;
+        let n = self.corners;
+        let terms = self.terms.get(cell * n..(cell + 1) * n).unwrap_or(&[]);
+        for terms in terms {
+            let corner = (i + terms.offset.0, k + terms.offset.1);
+            let [d0, d1, d2] = self
+                .lattice
+                .across(q - self.lattice.position(corner))
+                .map(f64::abs);
+            // A square's third distance is 0.
+            let farthest = greatest(greatest(d0, d1), d2);
+            let [s0, s1, s2, s3] = terms.skips;
+            nearest = least(nearest, least(d0 + s0, d1 + s1));
+            nearest = least(nearest, least(d2 + s2, farthest + s3));
+        }
+        nearest
+    }
 }
 
 /// How the ramp goes round the tile's corner at a vertex, for a point in one sector round
-/// it: the tile edges either side of the sector, and the tile's angle there against a
-/// half turn.
+/// it: the lattice lines (indices into `Lattice::across`) of the tile edges either side
+/// of the sector, and the tile's angle there against a half turn.
 #[derive(Debug, Clone, Copy)]
 struct CornerRule {
     a: u8,
@@ -188,162 +331,110 @@ impl CornerRule {
         // The tile's angle here, in sectors: twice the sectors is the full turn.
         let sectors = up + down;
         CornerRule {
-            a: ((sector + up) % count) as u8,
-            b: ((sector + count - down) % count) as u8,
+            a: ((sector + up) % (count / 2)) as u8,
+            b: ((sector + count - down) % (count / 2)) as u8,
             angle: (2 * sectors).cmp(&count),
         }
     }
 }
 
-impl Layout {
-    /// The layout whose edge flags are given per edge class (the first half of the
-    /// lattice directions), one per vertex of the period, k major.
-    fn new(lattice: Lattice, period: (i32, i32), edges: &[Vec<bool>]) -> Layout {
-        let (p, q) = period;
-        let steps = lattice.steps();
-        let half = steps.len() / 2;
-        let flag = |class: usize, (i, k): (i32, i32)| {
-            edges[class][(k.rem_euclid(q) * p + i.rem_euclid(p)) as usize]
-        };
-        let masks = (0..q)
-            .flat_map(|k| (0..p).map(move |i| (i, k)))
-            .map(|(i, k)| {
-                (0..steps.len())
-                    .filter(|&d| {
-                        if d < half {
-                            flag(d, (i, k))
-                        } else {
-                            let (di, dk) = steps[d];
-                            flag(d - half, (i + di, k + dk))
-                        }
-                    })
-                    .fold(0u8, |mask, d| mask | 1 << d)
-            })
-            .collect();
-        let count = steps.len();
-        let rules = (0..1u16 << count)
-            .map(|mask| std::array::from_fn(|sector| CornerRule::new(count, mask as u8, sector)))
-            .collect();
-        Layout {
-            lattice,
-            period,
-            masks,
-            rules,
-        }
-    }
-
-    /// The directions in which tile edges leave vertex `(i, k)`, as bits.
-    fn mask(&self, (i, k): (i32, i32)) -> u8 {
-        let (p, q) = self.period;
-        self.masks[(k.rem_euclid(q) * p + i.rem_euclid(p)) as usize]
-    }
-
-    /// The distance from `q` to the tile's edges as the ramp counts it, where it is
-    /// under `reach`.
-    fn distance(&self, q: DVec2, reach: f64) -> f64 {
-        let (corners, directions, corner_count) = self.lattice.cell(q);
-        let corners = &corners[..corner_count];
-        // The lattice directions round a vertex (two per lattice line through it).
-        let count = self.lattice.steps().len();
-        let mut nearest = reach;
-        for (n, &corner) in corners.iter().enumerate() {
-            let mask = self.mask(corner);
-            // No tile edge leaves this vertex: no cell edge and no tile corner here.
-            if mask == 0 {
-                continue;
-            }
-            let across = self.lattice.across(q - self.lattice.position(corner));
-            let line = |d: usize| across[d % (count / 2)].abs();
-            // The cell's own edge from this corner to the next, when it is a tile edge.
-            let d = usize::from(directions[n]);
-            if mask >> d & 1 != 0 {
-                nearest = nearest.min(line(d));
-            }
-            // The tile's corner at this vertex: the tile edges either side of the sector
-            // that holds `q`.
-            let rule = self.rules[usize::from(mask)][self.lattice.sector(across)];
-            let (to_a, to_b) = (line(usize::from(rule.a)), line(usize::from(rule.b)));
-            let corner_distance = match rule.angle {
-                std::cmp::Ordering::Less => to_a.min(to_b),
-                std::cmp::Ordering::Equal => to_a,
-                // Round a notch, the farthest of the lattice lines through the vertex.
-                std::cmp::Ordering::Greater => (0..count / 2).map(line).fold(0.0, f64::max),
-            };
-            nearest = nearest.min(corner_distance);
-        }
-        nearest
-    }
+/// The layout of a combination (which must pass `check`), read from `pavements.txt` the
+/// first time a scene uses it: a scene uses few of them.
+fn layout(pavement: &Pavement) -> &'static Layout {
+    static READY: [OnceLock<Layout>; LAYOUTS] = [const { OnceLock::new() }; LAYOUTS];
+    let index = index(pavement);
+    READY[index].get_or_init(|| {
+        let line = include_str!("pavements.txt")
+            .lines()
+            .filter(|l| l.starts_with("pavement "))
+            .nth(index)
+            .expect("pavements.txt has a line for every combination");
+        read_layout(line)
+    })
 }
 
-fn layouts() -> &'static [Layout] {
-    static LAYOUTS: OnceLock<Vec<Layout>> = OnceLock::new();
-    LAYOUTS.get_or_init(|| read_layouts(include_str!("pavements.txt")))
-}
-
-/// The layouts in `text`, in the order it gives them: squares, triangles, then hexagons,
-/// each by number of tiles and pattern. The text is ours and fixed (a test reads it all),
-/// so a malformed line is a bug, not an input error.
-fn read_layouts(text: &str) -> Vec<Layout> {
-    text.lines()
-        .filter(|l| l.starts_with("pavement "))
-        .map(|line| {
-            let mut parts = line.split('|');
-            let head: Vec<i32> = parts
-                .next()
-                .unwrap_or("")
-                .split_whitespace()
-                .filter_map(|w| w.parse().ok())
-                .collect();
-            let [sides, _, _, p, q] = head[..] else {
-                panic!("pavements.txt: `pavement S T P period I K` expected: {line}");
-            };
-            let lattice = match sides {
-                3 => Lattice::Triangle,
-                4 => Lattice::Square,
-                _ => Lattice::Hexagon,
-            };
-            let edges = parts
-                .map(|bits| bits.trim().chars().map(|c| c == '1').collect::<Vec<_>>())
-                .collect::<Vec<_>>();
-            assert!(
-                edges.len() == lattice.steps().len() / 2
-                    && edges.iter().all(|e| e.len() == (p * q) as usize),
-                "pavements.txt: wrong edge flags: {line}"
-            );
-            Layout::new(lattice, (p, q), &edges)
-        })
-        .collect()
-}
-
-/// Where a combination's layout is in the table.
-fn index(pavement: &Pavement) -> usize {
-    let (start, counts): (usize, &[u8]) = match pavement.sides {
-        4 => (0, &SQUARE_PATTERNS),
-        3 => (SQUARE_LAYOUTS, &TRIANGLE_PATTERNS),
-        _ => (SQUARE_LAYOUTS + TRIANGLE_LAYOUTS, &HEXAGON_PATTERNS),
+/// The layout a line of `pavements.txt` gives. The text is ours and fixed (a test reads
+/// it all), so a malformed line is a bug, not an input error.
+fn read_layout(line: &str) -> Layout {
+    let mut parts = line.split('|');
+    let head: Vec<i32> = parts
+        .next()
+        .unwrap_or("")
+        .split_whitespace()
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    let [sides, _, _, p, q] = head[..] else {
+        panic!("pavements.txt: `pavement S T P period I K` expected: {line}");
     };
-    let tiles = usize::from(pavement.tiles).clamp(1, counts.len());
-    start + layouts_before(counts, tiles - 1) + usize::from(pavement.pattern).max(1) - 1
+    let lattice = match sides {
+        3 => Lattice::Triangle,
+        4 => Lattice::Square,
+        _ => Lattice::Hexagon,
+    };
+    let edges = parts
+        .map(|bits| bits.trim().chars().map(|c| c == '1').collect::<Vec<_>>())
+        .collect::<Vec<_>>();
+    // A hexagon's period must carry hexagons onto hexagons.
+    assert!(
+        edges.len() == lattice.steps().len() / 2
+            && edges.iter().all(|e| e.len() == (p * q) as usize)
+            && (lattice != Lattice::Hexagon || (p % 3 == 0 && q % 3 == 0)),
+        "pavements.txt: wrong edge flags: {line}"
+    );
+    Layout::new(lattice, (p, q), &edges)
 }
 
-const SQUARE_LAYOUTS: usize = layouts_before(&SQUARE_PATTERNS, SQUARE_PATTERNS.len());
-const TRIANGLE_LAYOUTS: usize = layouts_before(&TRIANGLE_PATTERNS, TRIANGLE_PATTERNS.len());
+/// Where a combination's layout is in the table: squares, triangles, then hexagons, each
+/// by number of tiles and pattern.
+fn index(pavement: &Pavement) -> usize {
+    let (cell, starts): (usize, &[usize]) = match pavement.sides {
+        4 => (0, &SQUARE_STARTS),
+        3 => (1, &TRIANGLE_STARTS),
+        _ => (2, &HEXAGON_STARTS),
+    };
+    let tiles = usize::from(pavement.tiles).clamp(1, starts.len()) - 1;
+    CELL_STARTS[cell] + starts[tiles] + usize::from(pavement.pattern).max(1) - 1
+}
 
-/// How many layouts the first `n` numbers of tiles of `counts` have.
-const fn layouts_before(counts: &[u8], n: usize) -> usize {
+const SQUARE_STARTS: [usize; 6] = starts(&SQUARE_PATTERNS);
+const TRIANGLE_STARTS: [usize; 6] = starts(&TRIANGLE_PATTERNS);
+const HEXAGON_STARTS: [usize; 5] = starts(&HEXAGON_PATTERNS);
+/// Where the squares', triangles' and hexagons' layouts start.
+const CELL_STARTS: [usize; 4] = starts(&[
+    layouts(&SQUARE_PATTERNS),
+    layouts(&TRIANGLE_PATTERNS),
+    layouts(&HEXAGON_PATTERNS),
+]);
+/// How many layouts there are.
+const LAYOUTS: usize = CELL_STARTS[3];
+
+/// How many layouts `counts` (patterns per number of tiles) make.
+const fn layouts(counts: &[u8]) -> u8 {
     let mut sum = 0;
     let mut i = 0;
-    while i < n {
-        sum += counts[i] as usize;
+    while i < counts.len() {
+        sum += counts[i];
         i += 1;
     }
     sum
 }
 
+/// For each number of tiles of `counts`, how many layouts the numbers before it have;
+/// one past the end, all of them.
+const fn starts<const N: usize, const M: usize>(counts: &[u8; N]) -> [usize; M] {
+    let mut starts = [0; M];
+    let mut i = 1;
+    while i < M {
+        starts[i] = starts[i - 1] + counts[i - 1] as usize;
+        i += 1;
+    }
+    starts
+}
+
 /// The value of the pavement at `p` (y is ignored), in 0..=1. The combination must pass
 /// `check`.
 pub fn value(pavement: &Pavement, p: DVec3) -> f64 {
-    let layout = &layouts()[index(pavement)];
+    let layout = layout(pavement);
     let ramp = if layout.lattice == Lattice::Square {
         0.5
     } else {
@@ -401,17 +492,56 @@ mod tests {
         }
     }
 
+    /// Each cell's corners add their terms separately, so a wrong term would break the
+    /// ramp where cells meet: across every lattice line the value is continuous.
+    #[test]
+    fn values_are_continuous_across_cell_edges() {
+        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+        let mut random = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for sides in [3, 4, 6] {
+            let lattice = if sides == 4 {
+                Lattice::Square
+            } else {
+                Lattice::Triangle
+            };
+            let steps = lattice.steps();
+            for tiles in 1..=6 {
+                for pattern in 1..=pattern_count(sides, tiles) {
+                    for _ in 0..400 {
+                        let vertex = ((random() * 40.0) as i32 - 20, (random() * 40.0) as i32 - 20);
+                        let d = (random() * (steps.len() / 2) as f64) as usize;
+                        let along = lattice.position(steps[d]) - lattice.position((0, 0));
+                        let on = lattice.position(vertex) + along * (0.05 + 0.9 * random());
+                        let side = along.perp() * 1e-9;
+                        let (a, b) = (on + side, on - side);
+                        let va = at(sides, tiles, pattern, a.x, a.y);
+                        let vb = at(sides, tiles, pattern, b.x, b.y);
+                        assert!(
+                            (va - vb).abs() < 1e-6,
+                            "pavement {sides} {tiles} {pattern} across {on}: {va} and {vb}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+
     #[test]
     fn the_table_has_every_combination() {
-        let layouts = read_layouts(include_str!("pavements.txt"));
-        let total: usize = [&TRIANGLE_PATTERNS[..], &SQUARE_PATTERNS, &HEXAGON_PATTERNS]
-            .iter()
-            .flat_map(|c| c.iter())
-            .map(|&c| usize::from(c))
-            .sum();
-        assert_eq!(layouts.len(), total);
+        let lines: Vec<&str> = include_str!("pavements.txt")
+            .lines()
+            .filter(|l| l.starts_with("pavement "))
+            .collect();
+        assert_eq!(lines.len(), LAYOUTS);
+        for line in &lines {
+            read_layout(line);
+        }
         // Every combination finds its own line.
-        let text = include_str!("pavements.txt");
         for sides in [3, 4, 6] {
             for tiles in 1..=6 {
                 for pattern in 1..=pattern_count(sides, tiles) {
@@ -421,12 +551,8 @@ mod tests {
                         pattern,
                     };
                     assert!(check(&pavement).is_ok());
-                    let line = text
-                        .lines()
-                        .filter(|l| l.starts_with("pavement "))
-                        .nth(index(&pavement));
                     let head = format!("pavement {sides} {tiles} {pattern} ");
-                    assert!(line.is_some_and(|l| l.starts_with(&head)), "{head}");
+                    assert!(lines[index(&pavement)].starts_with(&head), "{head}");
                 }
             }
         }
