@@ -644,6 +644,7 @@ impl Builder {
                     major: major.abs(),
                     minor: minor.abs(),
                     sturm: *sturm,
+                    ball: None,
                 }),
                 DAffine3::IDENTITY,
             ),

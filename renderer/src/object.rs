@@ -108,6 +108,10 @@ impl Leaf {
     ) -> Leaf {
         let identity = to_world == DAffine3::IDENTITY;
         let to_local = to_world.inverse();
+        let shape = match shape {
+            Shape::Torus(torus) if !identity => Shape::Torus(torus.placed(&to_world)),
+            shape => shape,
+        };
         let bounds = shape.world_bounds(&to_world);
         Leaf {
             shape,
@@ -249,6 +253,11 @@ impl Leaf {
 
     /// The nearest crossing inside the query's interval.
     fn first_hit(&self, q: &Query) -> Option<crate::shapes::Root> {
+        if let (Shape::Torus(torus), Some(to_local)) = (&self.shape, &self.to_local)
+            && !torus.may_meet(to_local, &q.ray, q.tmin, q.tmax)
+        {
+            return None;
+        }
         self.shape
             .first_hit(&self.local_ray(&q.ray), q.tmin, q.tmax)
     }

@@ -339,6 +339,7 @@ mod tests {
             major: 2.0,
             minor: 0.25,
             sturm: false,
+            ball: None,
         });
         // Tilted, stretched along one axis and moved, as a matrix in a scene may.
         let to_world = DAffine3::from_translation(DVec3::new(1.0, -2.0, 3.0))

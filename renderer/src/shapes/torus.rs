@@ -6,7 +6,7 @@ use crate::fast_math::{max, min};
 use crate::polynomial;
 use crate::ray::Ray;
 use crate::sturm;
-use glam::DVec3;
+use glam::{DAffine3, DVec3};
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Torus {
@@ -15,9 +15,80 @@ pub struct Torus {
     /// `sturm`: roots by Sturm sequences, slower than the closed form but sure to find
     /// both of two close roots where a ray grazes the tube.
     pub sturm: bool,
+    /// The ball around the torus in the world, when a transform places it there: see
+    /// [`Torus::may_meet`].
+    pub ball: Option<WorldBall>,
+}
+
+/// A ball in the world holding a placed torus's bounding sphere, a little larger so that
+/// rounding never makes it the smaller of the two.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WorldBall {
+    centre: DVec3,
+    /// The square of the radius.
+    radius2: f64,
 }
 
 impl Torus {
+    /// The torus with the ball that holds it once `to_world` places it.
+    pub fn placed(self, to_world: &DAffine3) -> Torus {
+        // The linear part stretches no vector by more than the square root of the largest
+        // row sum of |LᵀL| (Gershgorin's bound on its largest eigenvalue), which is exact
+        // for rotations and scalings, the transforms scenes give tori.
+        let m = to_world.matrix3;
+        let columns = [m.x_axis, m.y_axis, m.z_axis];
+        let stretch2 = columns
+            .iter()
+            .map(|a| columns.iter().map(|b| a.dot(*b).abs()).sum::<f64>())
+            .fold(0.0, f64::max);
+        let radius = stretch2.sqrt() * (self.major + self.minor) * (1.0 + 1e-6);
+        Torus {
+            ball: Some(WorldBall {
+                centre: to_world.translation,
+                radius2: radius * radius,
+            }),
+            ..self
+        }
+    }
+
+    /// Whether the world ray may cross the torus that `to_local` moves into its canonical
+    /// frame within `(tmin, tmax)`: `false` only when the part of the ray inside the
+    /// torus's ball and inside the slab its tube fills lies outside the interval, where
+    /// [`Torus::first_hit`] finds nothing either. Moving a ray into the torus's frame costs
+    /// more than this test, and most rays a ring's box lets through miss the ring.
+    pub fn may_meet(&self, to_local: &DAffine3, ray: &Ray, tmin: f64, tmax: f64) -> bool {
+        let Some(ball) = &self.ball else {
+            return true;
+        };
+        let (o, d) = (ray.origin, ray.direction);
+        let m = &to_local.matrix3;
+        // The ray's height in the torus's frame, computed exactly as the frame change
+        // computes it, so that the slab ends are those `crossings` works with.
+        let oy = m.x_axis.y * o.x + m.y_axis.y * o.y + m.z_axis.y * o.z + to_local.translation.y;
+        let dy = m.x_axis.y * d.x + m.y_axis.y * d.y + m.z_axis.y * d.z;
+        let small = self.minor;
+        let (mut near, mut far) = (tmin, tmax);
+        if dy != 0.0 {
+            let (ya, yb) = ((-small - oy) / dy, (small - oy) / dy);
+            near = max(near, min(ya, yb));
+            far = min(far, max(ya, yb));
+        } else if oy.abs() > small {
+            return false;
+        }
+        if near > far {
+            return false;
+        }
+        // The ray meets the ball within that span when its point there nearest the centre
+        // is inside the ball: from the unclamped nearest point, this loses no precision
+        // however far the ray starts.
+        let to_centre = o - ball.centre;
+        let nearest = -to_centre.dot(d) / d.length_squared();
+        let miss = to_centre + d * max(near, min(far, nearest));
+        // A degenerate ray (NaN) is left to the full test.
+        let miss2 = miss.length_squared();
+        miss2 <= ball.radius2 || miss2.is_nan()
+    }
+
     pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
         self.intersect_within(ray, f64::NEG_INFINITY, f64::INFINITY, roots);
     }
@@ -155,6 +226,7 @@ mod tests {
             major: 2.0,
             minor: 0.5,
             sturm: false,
+            ball: None,
         };
         let ray = Ray::new(DVec3::new(-5.0, 0.2, 0.0), DVec3::X);
         let all = crossings(&torus, &ray);
@@ -173,11 +245,66 @@ mod tests {
     }
 
     #[test]
+    fn the_world_ball_rejects_only_rays_that_miss() {
+        let torus = Torus {
+            major: 1.3,
+            minor: 0.06,
+            sturm: false,
+            ball: None,
+        };
+        // Turned, stretched a little and moved, as a `matrix` in a scene may place it.
+        let to_world = DAffine3::from_translation(DVec3::new(0.4, -0.2, 0.7))
+            * DAffine3::from_axis_angle(DVec3::new(0.3, 1.0, -0.6).normalize(), 1.1)
+            * DAffine3::from_scale(DVec3::new(1.0, 1.2, 0.9));
+        let to_local = to_world.inverse();
+        let placed = torus.placed(&to_world);
+        // Rays from a camera-like grid of origins towards points spread around the ring,
+        // many of them grazing the tube; a simple generator keeps the test repeatable.
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let (mut hits, mut rejected) = (0, 0);
+        for _ in 0..20_000 {
+            let origin = DVec3::new(next() * 6.0, next() * 6.0, -8.0 + next());
+            let target =
+                to_world.transform_point3(DVec3::new(next() * 1.5, next() * 0.1, next() * 1.5));
+            let ray = Ray::new(origin, target - origin);
+            let (tmin, tmax) = (
+                1e-9,
+                if next() > 0.0 {
+                    f64::INFINITY
+                } else {
+                    1.0 + next().abs()
+                },
+            );
+            let local = Ray::new(
+                to_local.transform_point3(ray.origin),
+                to_local.transform_vector3(ray.direction),
+            );
+            let hit = torus.first_hit(&local, tmin, tmax);
+            let may = placed.may_meet(&to_local, &ray, tmin, tmax);
+            assert!(may || hit.is_none(), "{ray:?} {tmin} {tmax}: {hit:?}");
+            hits += usize::from(hit.is_some());
+            rejected += usize::from(!may);
+        }
+        // The test means something only if both kinds of ray occur often.
+        assert!(
+            hits > 1000 && rejected > 1000,
+            "{hits} hits, {rejected} rejected"
+        );
+    }
+
+    #[test]
     fn sturm_finds_the_same_crossings() {
         let closed = Torus {
             major: 2.0,
             minor: 0.5,
             sturm: false,
+            ball: None,
         };
         let sturm = Torus {
             sturm: true,
