@@ -247,7 +247,6 @@ impl<'w> Tracer<'w> {
         let world = self.world;
         let leaf: &'w Leaf = hit.leaf;
         let p = at.world;
-        let relative_ior = self.inside.relative_ior(&leaf.interior);
         let mut indirect = crate::radiosity::Indirect::new(p, raw_normal, level);
         let mut colour = DVec3::ZERO;
         // What the layers so far let through, and how much of it counts.
@@ -255,14 +254,15 @@ impl<'w> Tracer<'w> {
         let mut trans = 1.0;
         let mut top_normal = raw_normal;
         let reflections = self.reflections.len();
-        let mut photon_lights = std::mem::take(&mut self.photon_lights);
-        photon_lights.clear();
         // Gathered photons light a surface as light sources do: not at all where no layer's
         // finish shows light.
+        let mut photon_lights = Vec::new();
         if let Some(photons) = &world.photons
             && leaf.photons.collect()
             && layers.iter().any(|layer| shows_light(&layer.finish))
         {
+            photon_lights = std::mem::take(&mut self.photon_lights);
+            photon_lights.clear();
             photons.lights_at(p, raw_normal, &mut self.gather_scratch, &mut photon_lights);
         }
         for (i, layer) in layers.iter().enumerate() {
@@ -294,9 +294,17 @@ impl<'w> Tracer<'w> {
                 1.0 - pigment.filter - pigment.transmit
             };
             let cos_incidence = -ray.direction.dot(normal);
+            // Only Fresnel reflection looks at the interiors either side.
+            let relative_ior = match &finish.reflection {
+                Some(r) if r.fresnel => self.inside.relative_ior(&leaf.interior),
+                _ => 1.0,
+            };
             let reflectivity = reflectivity(finish, pigment.rgb, cos_incidence, relative_ior);
-            let exponent = finish.reflection.as_ref().map_or(1.0, |r| r.exponent);
-            self.reflections.push((reflectivity, normal, exponent));
+            // A layer that reflects nothing sends no reflected ray.
+            if reflectivity != DVec3::ZERO {
+                let exponent = finish.reflection.as_ref().map_or(1.0, |r| r.exponent);
+                self.reflections.push((reflectivity, normal, exponent));
+            }
 
             let ambient = self.ambient(finish, pigment.rgb, normal, opacity, &mut indirect);
             let mut own = pigment.rgb * (ambient + finish.emission) * opacity;
@@ -346,7 +354,10 @@ impl<'w> Tracer<'w> {
             }
             trans = fast_math::min(greyscale(filter).abs(), 1.0);
         }
-        self.photon_lights = photon_lights;
+        // The gathering's list goes back with its allocation, for the next point.
+        if photon_lights.capacity() > 0 {
+            self.photon_lights = photon_lights;
+        }
 
         // Light from behind the surface.
         let mut transmit = 0.0;

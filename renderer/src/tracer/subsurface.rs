@@ -64,7 +64,9 @@ impl<'w> Tracer<'w> {
 
     /// The light leaving `p` (with `normal` facing the viewer) of `leaf` after travelling
     /// under the surface from where the lights reach the object, before the finish's
-    /// `diffuse` scales it.
+    /// `diffuse` scales it. Kept out of line: inlined into the shading of every hit, its
+    /// set-up would be hoisted there and paid by surfaces without subsurface light.
+    #[inline(never)]
     pub(super) fn subsurface_light(
         &mut self,
         profile: &Profile,
