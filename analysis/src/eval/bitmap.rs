@@ -243,6 +243,8 @@ impl Evaluator<'_> {
             filter: PaletteAmounts::default(),
             transmit: PaletteAmounts::default(),
             transform: Transform::IDENTITY,
+            warps: Vec::new(),
+            turbulence: None,
             uv_mapping: false,
         };
         loop {
@@ -462,5 +464,49 @@ mod tests {
             error(&scene("df3 \"grid.df3\" interpolate 3"), files),
             "interpolate must be 0, 1 or 2 for a density_file, not 3 64..65 []"
         );
+    }
+
+    /// Warps and turbulence move an image map's point as they move a pattern's.
+    #[test]
+    fn image_maps_take_warps_and_turbulence() {
+        let red_at = |modifiers: &str, x: f64, y: f64| -> f64 {
+            // Two pixels: black on the left half of the unit square, white on the right.
+            let mut files = MemoryFiles::new();
+            files.insert_bytes("ramp.pgm", &b"P5 2 1 255\n\x00\xff"[..]);
+            let files = files.with(
+                    "scene.pov",
+                    format!(
+                        "#declare F = function {{ pigment {{ image_map {{ pgm \"ramp.pgm\" }} {modifiers} }} }}
+                         #debug str(F({x}, {y}, 0).red, 0, 6)"
+                    ),
+                );
+            let evaluation = evaluate("scene.pov", &files, &EvalOptions::default());
+            assert!(!evaluation.has_errors(), "{:?}", evaluation.diagnostics);
+            evaluation.debug_text().parse().unwrap()
+        };
+        assert_eq!(red_at("", 0.25, 0.5), 0.0);
+        assert_eq!(red_at("", 0.75, 0.5), 1.0);
+        // The left half repeated: x = 0.75 shows x = 0.25.
+        assert_eq!(red_at("warp { repeat x * 0.5 }", 0.75, 0.5), 0.0);
+        // A translation written before the warp acts after it: the repeated half, moved
+        // by half the image (which tiles the plane), is the white one.
+        assert_eq!(
+            red_at("translate x * 0.5 warp { repeat x * 0.5 }", 0.25, 0.5),
+            1.0
+        );
+        let points = [
+            (0.3, 0.2),
+            (0.45, 0.6),
+            (0.55, 0.9),
+            (0.7, 0.4),
+            (0.52, 0.5),
+        ];
+        let mut moved = false;
+        for (x, y) in points {
+            let classic = red_at("turbulence 0.3", x, y);
+            assert_eq!(classic, red_at("warp { turbulence 0.3 }", x, y));
+            moved |= classic != red_at("", x, y);
+        }
+        assert!(moved, "turbulence moved no point");
     }
 }

@@ -335,13 +335,24 @@ impl Evaluator<'_> {
                         }
                     }
                 }
-            } else if matches!(pigment, Pigment::Image(_))
+            } else if let Pigment::Image(map) = &mut pigment
                 && matches!(
                     token.kind,
                     TURBULENCE_KW | WARP_KW | OCTAVES_KW | OMEGA_KW | LAMBDA_KW
                 )
             {
-                return Err(self.unsupported(&token, "warps and turbulence on an image_map"));
+                // An image map is placed as a pattern is: its warps and turbulence go
+                // through the pattern modifiers on a stand-in pattern with its placement.
+                let mut placement = Pattern::new(PatternKind::Planar);
+                placement.transform = map.transform;
+                placement.warps = std::mem::take(&mut map.warps);
+                placement.turbulence = map.turbulence.take();
+                let parsed = self.pattern_modifier(&mut placement, &token);
+                map.transform = placement.transform;
+                map.warps = placement.warps;
+                map.turbulence = placement.turbulence;
+                parsed?;
+                continue;
             }
             return Err(self.error_at(
                 &token,

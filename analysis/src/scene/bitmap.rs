@@ -75,6 +75,9 @@ pub struct ImageMap {
     pub transmit: PaletteAmounts,
     /// From the image's pattern space to the world.
     pub transform: Transform,
+    /// `warp { }`s and classic `turbulence`, applied in pattern space as a pattern's are.
+    pub warps: Vec<super::Warp>,
+    pub turbulence: Option<super::Turbulence>,
     /// `uv_mapping`: the image is looked up at the surface's (u, v, 0), and the object's
     /// transformations do not move it.
     pub uv_mapping: bool,
