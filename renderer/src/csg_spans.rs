@@ -6,9 +6,10 @@
 //! needed: an intersection first meets its uninverted convex children's, which often
 //! settle the ray alone.
 
-use crate::object::{Object, Query};
+use crate::object::{Leaf, Object, Query};
 use crate::ray::Ray;
-use crate::shapes::{Root, Span};
+use crate::shapes::{Root, Shape, Span};
+use glam::DVec3;
 
 /// How many children of one node keep their stretches; those after them (a difference of
 /// many holes) are tested point by point, so that no node allocates per ray.
@@ -154,9 +155,23 @@ impl ChildSpans {
             Some(Along::Span { span, inverse }) if t != span.enter.t && t != span.exit.t => {
                 span.holds(t) != *inverse
             }
-            _ => children[j].inside(ray.at(t)),
+            _ => match &children[j] {
+                Object::Leaf(leaf) => leaf_holds(leaf, ray.at(t)),
+                child => child.inside(ray.at(t)),
+            },
         }
     }
+}
+
+/// Whether the leaf holds the point. A finite convex leaf's inside lies in the box around
+/// it: a point outside the box needs no test in the leaf's frame (most points of a drilled
+/// cube's faces are far from most drills).
+fn leaf_holds(leaf: &Leaf, p: DVec3) -> bool {
+    let bounded = leaf.shape.has_convex_span() && !matches!(leaf.shape, Shape::Plane(_));
+    if bounded && !(p.cmpge(leaf.bounds.min).all() && p.cmple(leaf.bounds.max).all()) {
+        return leaf.inverse;
+    }
+    leaf.inside(p)
 }
 
 /// A child's inside along the query's ray: its stretch when it is a convex leaf (found as
