@@ -7,6 +7,7 @@ mod gif;
 mod jpeg;
 mod netpbm;
 mod png;
+mod pot;
 mod tga;
 
 use std::fmt;
@@ -66,6 +67,7 @@ impl ImageFormat {
             "hdr" => ImageFormat::Hdr,
             "iff" => ImageFormat::Iff,
             "sys" => ImageFormat::Sys,
+            "pot" => ImageFormat::Pot,
             _ => return None,
         })
     }
@@ -192,6 +194,7 @@ pub fn decode(format: ImageFormat, bytes: &[u8]) -> Result<Image, ImageError> {
         ImageFormat::Gif => gif::decode(bytes)?,
         ImageFormat::Tga => tga::decode(bytes)?,
         ImageFormat::Jpeg => jpeg::decode(bytes)?,
+        ImageFormat::Pot => pot::decode(bytes)?,
         ImageFormat::Ppm | ImageFormat::Pgm => netpbm::decode(bytes)?,
         other => {
             return Err(ImageError::Unsupported(format!(
