@@ -11,14 +11,10 @@ use std::sync::Arc;
 
 /// Answers geometric queries about evaluated objects.
 pub trait Geometry: Send + Sync {
-    /// The nearest intersection of the ray from `origin` along `direction` with `object`,
-    /// and the surface normal there; `None` when the ray misses.
-    fn trace(
-        &self,
-        object: &Object,
-        origin: DVec3,
-        direction: DVec3,
-    ) -> Result<Option<(DVec3, DVec3)>, String>;
+    /// A tracer of rays against `object`, prepared once: scenes call `trace()` on the same
+    /// object over and over (placing things on a terrain), and preparing it (building a
+    /// height field's or a mesh's hierarchy) can cost far more than one ray.
+    fn tracer(&self, object: &Object) -> Result<Tracer, String>;
     /// A test of whether a point lies inside `object`, prepared once: `inside()` asks it
     /// one question, the `object` pattern one at every point it colours.
     fn inside_test(&self, object: &Object) -> Result<InsideTest, String>;
@@ -31,7 +27,7 @@ pub trait Geometry: Send + Sync {
 pub struct NoGeometry;
 
 impl Geometry for NoGeometry {
-    fn trace(&self, _: &Object, _: DVec3, _: DVec3) -> Result<Option<(DVec3, DVec3)>, String> {
+    fn tracer(&self, _: &Object) -> Result<Tracer, String> {
         Err(REFUSAL.into())
     }
 
@@ -46,6 +42,29 @@ impl Geometry for NoGeometry {
 
 const REFUSAL: &str =
     "this front end cannot answer geometric queries (trace, inside, extents, object pattern)";
+
+/// The rays a scene traces against one object: for a ray from `origin` along `direction`,
+/// the nearest intersection and the surface normal there, `None` when the ray misses.
+pub struct Tracer(Box<dyn Fn(DVec3, DVec3) -> TraceResult>);
+
+/// A traced ray's nearest hit and the normal there, if any, or why it could not be traced.
+pub type TraceResult = Result<Option<(DVec3, DVec3)>, String>;
+
+impl Tracer {
+    pub fn new(trace: impl Fn(DVec3, DVec3) -> TraceResult + 'static) -> Tracer {
+        Tracer(Box::new(trace))
+    }
+
+    pub fn trace(&self, origin: DVec3, direction: DVec3) -> TraceResult {
+        (self.0)(origin, direction)
+    }
+}
+
+impl fmt::Debug for Tracer {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("Tracer")
+    }
+}
 
 /// Whether a point lies inside one object, as the renderer's shapes decide it.
 #[derive(Clone)]

@@ -24,7 +24,7 @@ pub mod trig;
 
 pub use eval::{Budgets, EvalOptions, Evaluation, Message, Stream, evaluate, evaluate_with};
 pub use files::{DirectoryFiles, FileSource, MemoryFiles, Sources};
-pub use geometry::{Geometry, InsideTest, NoGeometry};
+pub use geometry::{Geometry, InsideTest, NoGeometry, Tracer};
 
 /// Checks a scene the way every front end does: the syntax errors of the main file first;
 /// when there are none, the evaluator's findings. The CLI's `check`, the renderer pipeline,

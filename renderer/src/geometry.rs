@@ -6,8 +6,8 @@ use crate::build::{BuildSettings, build_world};
 use crate::object::Query;
 use crate::ray::{Ray, RayKind};
 use crate::tracer::World;
-use analysis::InsideTest;
 use analysis::scene::{Object, Scene};
+use analysis::{InsideTest, Tracer};
 use glam::DVec3;
 
 /// The extent POV-Ray gives unbounded objects.
@@ -40,23 +40,20 @@ fn world_of(object: &Object) -> Result<World, String> {
 }
 
 impl analysis::Geometry for SceneGeometry {
-    fn trace(
-        &self,
-        object: &Object,
-        origin: DVec3,
-        direction: DVec3,
-    ) -> Result<Option<(DVec3, DVec3)>, String> {
-        let direction = direction.normalize_or_zero();
-        if direction == DVec3::ZERO {
-            return Err("trace() needs a non-zero direction".into());
-        }
+    fn tracer(&self, object: &Object) -> Result<Tracer, String> {
         let world = world_of(object)?;
-        let ray = Ray::new(origin, direction);
-        let query = Query::new(ray, RayKind::Primary, 0.0, f64::INFINITY);
-        let mut scratch = Vec::new();
-        Ok(world.bvh.nearest(&query, &mut scratch).map(|hit| {
-            let point = ray.at(hit.t);
-            (point, hit.leaf.normal(point, hit.part))
+        Ok(Tracer::new(move |origin, direction| {
+            let direction = direction.normalize_or_zero();
+            if direction == DVec3::ZERO {
+                return Err("trace() needs a non-zero direction".into());
+            }
+            let ray = Ray::new(origin, direction);
+            let query = Query::new(ray, RayKind::Primary, 0.0, f64::INFINITY);
+            let mut scratch = Vec::new();
+            Ok(world.bvh.nearest(&query, &mut scratch).map(|hit| {
+                let point = ray.at(hit.t);
+                (point, hit.leaf.normal(point, hit.part))
+            }))
         }))
     }
 

@@ -309,13 +309,12 @@ impl Evaluator<'_> {
             TRACE_KW => self.trace_call(token),
             INSIDE_KW => {
                 self.expect(L_PAREN, "'('")?;
-                let object = self.object_or_identifier()?;
+                let object = self.shared_object_or_identifier()?;
                 self.expect(COMMA, "','")?;
                 let point = self.vector_in_parens()?;
                 self.expect(R_PAREN, "')'")?;
                 let inside = self
-                    .geometry
-                    .inside_test(&object)
+                    .inside_test_of(&object)
                     .map_err(|m| self.error_at(token, m))?
                     .contains(point);
                 float(f64::from(u8::from(inside)))
@@ -364,7 +363,7 @@ impl Evaluator<'_> {
     /// `trace(Object, Start, Direction [, NormalIdent])`, after `trace`.
     fn trace_call(&mut self, token: &Token) -> Result<Option<Value>> {
         self.expect(L_PAREN, "'('")?;
-        let object = self.object_or_identifier()?;
+        let object = self.shared_object_or_identifier()?;
         self.expect(COMMA, "','")?;
         let origin = self.vector_in_parens()?;
         self.expect(COMMA, "','")?;
@@ -381,8 +380,8 @@ impl Evaluator<'_> {
         };
         self.expect(R_PAREN, "')'")?;
         let hit = self
-            .geometry
-            .trace(&object, origin, direction)
+            .tracer_of(&object)
+            .and_then(|tracer| tracer.trace(origin, direction))
             .map_err(|m| self.error_at(token, m))?;
         let (point, normal) = hit.unwrap_or((DVec3::ZERO, DVec3::ZERO));
         if let Some(slot) = normal_slot {

@@ -26,6 +26,7 @@ mod media;
 mod mesh;
 mod normal_map;
 mod object;
+mod object_queries;
 mod pattern_head;
 mod photons;
 mod polygon;
@@ -245,6 +246,8 @@ pub(crate) struct Evaluator<'a> {
     default_importance: f64,
     /// Expressions compiled for replay, by place.
     expr_cache: expr_cache::ExprCache,
+    /// The renderer's prepared `trace()` and `inside()` answers for recent objects.
+    object_queries: object_queries::ObjectQueries,
 }
 
 impl<'a> Evaluator<'a> {
@@ -298,6 +301,7 @@ impl<'a> Evaluator<'a> {
             default_texture: Texture::default(),
             default_importance: 1.0,
             expr_cache: expr_cache::ExprCache::default(),
+            object_queries: object_queries::ObjectQueries::default(),
         }
     }
 

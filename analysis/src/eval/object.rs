@@ -8,6 +8,7 @@ use super::value::{MaterialValue, Value};
 use super::{Evaluator, Result};
 use crate::scene::{CsgOp, Light, Object, Shape, Texture, Transform};
 use glam::DVec3;
+use std::rc::Rc;
 use std::sync::Arc;
 use syntax::SyntaxKind::{self, *};
 
@@ -240,18 +241,25 @@ impl Evaluator<'_> {
     /// An object statement or an object identifier: what `object { }`, `looks_like { }`,
     /// `projected_through { }` and the functions of objects take.
     pub(super) fn object_or_identifier(&mut self) -> Result<Object> {
+        self.shared_object_or_identifier().map(Rc::unwrap_or_clone)
+    }
+
+    /// [`Self::object_or_identifier`], sharing a declared object's storage rather than
+    /// copying it: the geometric queries find the renderer's preparation of an object by it.
+    pub(super) fn shared_object_or_identifier(&mut self) -> Result<Rc<Object>> {
         let token = self.next()?;
         if Self::starts_object(token.kind) {
             self.unget(token);
-            return self.object();
+            return self.object().map(Rc::new);
         }
         match token.slot.as_ref().map(|s| s.borrow().clone()) {
-            Some(Value::Object(object)) => Ok(Object::clone(&object)),
+            Some(Value::Object(object)) => Ok(object),
             // POV-Ray's light source is an object too: `object { Lamp rotate y*30 }` places
             // a declared light, alone or among a CSG's children.
-            Some(Value::Light(light)) => {
-                Ok(light_only(Light::clone(&light), Some(self.span(&token))))
-            }
+            Some(Value::Light(light)) => Ok(Rc::new(light_only(
+                Light::clone(&light),
+                Some(self.span(&token)),
+            ))),
             Some(other) => Err(self.error_at(
                 &token,
                 format!("expected an object, found {}", other.type_name()),

@@ -233,7 +233,12 @@ mod tests {
                     #debug concat(str(P(0, 0, 0), 0, 0), str(P(2, 0, 0), 0, 0), \"\\n\")\n\
                     plane { y, 0 pigment { object { Ball rgb 1, rgb 0 } scale 2 } }";
         let files = MemoryFiles::new().with("scene.pov", text);
-        let evaluation = evaluate_with("scene.pov", &files, &EvalOptions::default(), &SpheresOnly);
+        let evaluation = evaluate_with(
+            "scene.pov",
+            &files,
+            &EvalOptions::default(),
+            &SpheresOnly::default(),
+        );
         assert_eq!(evaluation.debug_text(), "10\n");
         let scene = evaluation.scene.expect("the scene evaluates");
         let texture = scene.objects[0].texture.clone().expect("a texture");

@@ -214,29 +214,32 @@ fn files_written_can_be_read_back() {
     );
 }
 
-/// A stand-in renderer that knows spheres only, to test the calls that ask it.
-pub(super) struct SpheresOnly;
+/// A stand-in renderer that knows spheres only, to test the calls that ask it. It counts
+/// the tracers it prepares.
+#[derive(Default)]
+pub(super) struct SpheresOnly {
+    prepared: std::sync::atomic::AtomicUsize,
+}
 
 impl crate::geometry::Geometry for SpheresOnly {
-    fn trace(
-        &self,
-        object: &crate::scene::Object,
-        origin: glam::DVec3,
-        direction: glam::DVec3,
-    ) -> std::result::Result<Option<(glam::DVec3, glam::DVec3)>, String> {
+    fn tracer(&self, object: &crate::scene::Object) -> std::result::Result<crate::Tracer, String> {
         let Shape::Sphere { center, radius } = object.shape else {
             return Err("spheres only".into());
         };
-        let d = direction.normalize();
-        let oc = origin - center;
-        let b = oc.dot(d);
-        let disc = b * b - (oc.length_squared() - radius * radius);
-        if disc < 0.0 {
-            return Ok(None);
-        }
-        let t = -b - disc.sqrt();
-        let p = origin + d * t;
-        Ok(Some((p, (p - center) / radius)))
+        self.prepared
+            .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        Ok(crate::Tracer::new(move |origin, direction| {
+            let d = direction.normalize();
+            let oc = origin - center;
+            let b = oc.dot(d);
+            let disc = b * b - (oc.length_squared() - radius * radius);
+            if disc < 0.0 {
+                return Ok(None);
+            }
+            let t = -b - disc.sqrt();
+            let p = origin + d * t;
+            Ok(Some((p, (p - center) / radius)))
+        }))
     }
 
     fn inside_test(
@@ -272,7 +275,12 @@ fn trace_inside_and_extents_ask_the_renderer() {
 #debug concat(vstr(3, min_extent(S), ",", 0, 0), " ", vstr(3, max_extent(S), ",", 0, 0), "\n")
 "#;
     let files = MemoryFiles::new().with("scene.pov", text);
-    let evaluation = evaluate_with("scene.pov", &files, &EvalOptions::default(), &SpheresOnly);
+    let evaluation = evaluate_with(
+        "scene.pov",
+        &files,
+        &EvalOptions::default(),
+        &SpheresOnly::default(),
+    );
     expect![[r#"
         0.0,3.0,0.0 0.0,1.0,0.0
         10
@@ -289,6 +297,29 @@ fn trace_inside_and_extents_ask_the_renderer() {
         &refused.diagnostics.into_iter().filter(|d| d.is_error()).collect::<Vec<_>>(),
         &refused.sources,
     ));
+}
+
+#[test]
+fn a_declared_object_is_prepared_for_tracing_once() {
+    let text = r#"#version 3.7;
+#declare S = sphere { 0, 1 }
+#declare Sum = 0;
+#for (I, 1, 10)
+  #declare Sum = Sum + trace(S, <0, 5, 0>, -y).y;
+#end
+#declare S = sphere { 0, 2 }
+#declare Sum = Sum + trace(S, <0, 5, 0>, -y).y;
+#debug concat(str(Sum, 0, 0), "\n")
+"#;
+    let files = MemoryFiles::new().with("scene.pov", text);
+    let geometry = SpheresOnly::default();
+    let evaluation = evaluate_with("scene.pov", &files, &EvalOptions::default(), &geometry);
+    // Ten rays against the first sphere, one against its redeclared successor.
+    assert_eq!(evaluation.debug_text(), "12\n");
+    assert_eq!(
+        geometry.prepared.load(std::sync::atomic::Ordering::Relaxed),
+        2
+    );
 }
 
 #[test]
