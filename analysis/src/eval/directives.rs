@@ -180,7 +180,7 @@ impl Evaluator<'_> {
         // scope and frame depth of the directive itself are the ones that count.
         let scope = self.scopes.len() - 1;
         let depth = self.frames.len();
-        if local && indices.is_empty() && key.is_none() && !self.scopes[scope].contains_key(&text) {
+        if local && indices.is_empty() && key.is_none() && !self.defines(scope, &text) {
             // POV-Ray creates a #local before reading its value, so the value cannot use an
             // outer identifier of the same name.
             self.declare_local_in(scope, &text, Value::Uninitialized);
@@ -198,7 +198,7 @@ impl Evaluator<'_> {
             self.assign_key(&name, &text, key, value)?;
         } else {
             let existing = if local {
-                self.scopes[scope].get(&text).cloned()
+                self.local_slot(scope, &text)
             } else {
                 self.lookup_in(scope, &text)
             };
@@ -704,11 +704,12 @@ impl Evaluator<'_> {
         if step == 0.0 {
             return Err(self.error_at(hash, "#for with a step of 0 never ends"));
         }
-        self.declare_local(&name, Value::Float(start));
+        let variable = self.interner.intern(&name);
+        self.declare_local_symbol(variable, Value::Float(start));
         if for_continues(start, end, step) {
             let body_pos = self.position();
             self.conds().push(Cond::For {
-                name,
+                variable,
                 end,
                 step,
                 body_pos,
@@ -833,16 +834,20 @@ impl Evaluator<'_> {
                 self.loop_test(cond_pos, hash, opened_at)
             }
             Some(Cond::For {
-                name,
+                variable,
                 end,
                 step,
                 body_pos,
                 opened_at,
             }) => {
                 self.count_iteration(hash, opened_at)?;
-                let current = match self.lookup(&name).map(|slot| slot.borrow().clone()) {
+                let current = match self
+                    .lookup_symbol(variable)
+                    .map(|slot| slot.borrow().clone())
+                {
                     Some(Value::Float(v)) => v,
                     _ => {
+                        let name = self.interner.name(variable);
                         return Err(self.error_at(
                             hash,
                             format!("the #for variable '{name}' is no longer a float"),
@@ -850,11 +855,11 @@ impl Evaluator<'_> {
                     }
                 };
                 let next = current + step;
-                self.declare_local(&name, Value::Float(next));
+                self.declare_local_symbol(variable, Value::Float(next));
                 if for_continues(next, end, step) {
                     self.seek(body_pos);
                     self.conds().push(Cond::For {
-                        name,
+                        variable,
                         end,
                         step,
                         body_pos,
@@ -909,7 +914,7 @@ impl Evaluator<'_> {
             end,
             kind: FrameKind::Include,
             conds: Vec::new(),
-            entered_at: Some(self.span(&at)),
+            entered_at: Some((at.file, at.range())),
         });
         Ok(())
     }

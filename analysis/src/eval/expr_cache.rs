@@ -14,9 +14,9 @@
 use super::Evaluator;
 use super::builtins::{extreme, float_function, float_function2, refused_argument};
 use super::expr::{BinOp, combined, component, is_true, logical_not, negated};
+use super::symbols::Symbol;
 use super::tokens::{Cond, FileId, FrameKind, RawToken};
 use super::value::{Terms, Value};
-use std::rc::Rc;
 use syntax::SyntaxKind::{self, *};
 
 /// The grammar an expression is read with: `additive` outside parentheses, `full` inside
@@ -52,7 +52,7 @@ struct Compiled {
 #[derive(Debug)]
 enum Node {
     Value(Value),
-    Identifier(Rc<str>),
+    Identifier(Symbol),
     Negate(Box<Node>),
     Not(Box<Node>),
     Binary(BinOp, Box<[Node; 2]>),
@@ -181,7 +181,7 @@ impl Evaluator<'_> {
     fn replay(&self, node: &Node) -> Option<Value> {
         Some(match node {
             Node::Value(value) => value.clone(),
-            Node::Identifier(name) => self.numeric_identifier(name)?,
+            Node::Identifier(symbol) => self.numeric_identifier(*symbol)?,
             Node::Negate(operand) => negated(self.replay(operand)?).ok()?,
             Node::Not(operand) => logical_not(self.replay(operand)?).ok()?,
             Node::Binary(op, operands) => {
@@ -238,9 +238,13 @@ impl Evaluator<'_> {
         }
     }
 
-    /// The value of the identifier `name` when it holds a float, vector or colour.
-    fn numeric_identifier(&self, name: &str) -> Option<Value> {
-        let slot = self.scopes.iter().rev().find_map(|scope| scope.get(name))?;
+    /// The value of the identifier `symbol` when it holds a float, vector or colour.
+    fn numeric_identifier(&self, symbol: Symbol) -> Option<Value> {
+        let slot = self
+            .scopes
+            .iter()
+            .rev()
+            .find_map(|scope| scope.get(&symbol))?;
         let value = slot.borrow();
         value.is_numeric().then(|| value.clone())
     }
@@ -397,7 +401,10 @@ impl Compiler<'_, '_> {
             // An identifier followed by '(' calls a function, spline or macro; one followed
             // by '[' is an array element.
             IDENT if matches!(self.peek()?, L_PAREN | L_BRACK) => None,
-            IDENT => Some(Node::Identifier(Rc::from(self.text(token)))),
+            // A name never met is declared nowhere; the token getter reports it.
+            IDENT => Some(Node::Identifier(
+                self.evaluator.interner.get(self.text(token))?,
+            )),
             // `version` changes with `#version`; the other constants are fixed for an
             // evaluation.
             VERSION_KW => None,

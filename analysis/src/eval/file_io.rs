@@ -68,7 +68,7 @@ impl Evaluator<'_> {
         };
         let handle_name = self.text(&handle).to_owned();
         let file = Value::File(Rc::new(RefCell::new(OpenFile { name, reading })));
-        self.scopes[0].insert(handle_name, Rc::new(RefCell::new(file)));
+        self.define_global(&handle_name, file);
         Ok(())
     }
 

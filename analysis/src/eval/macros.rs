@@ -2,6 +2,7 @@
 //! binds them in a new scope (an identifier argument by reference, anything else by
 //! value), and continues reading from the macro body.
 
+use super::symbols::Symbol;
 use super::tokens::{FileId, Frame, FrameKind, Token};
 use super::value::Value;
 use super::{Evaluator, Result};
@@ -13,6 +14,8 @@ use syntax::SyntaxKind::*;
 #[derive(Debug, Clone, PartialEq)]
 pub struct Param {
     pub name: String,
+    /// The name interned, which each call binds.
+    pub symbol: Symbol,
     pub optional: bool,
 }
 
@@ -74,8 +77,10 @@ impl Evaluator<'_> {
             if params.iter().any(|p| p.name == param) {
                 return Err(self.error_at(&token, format!("parameter '{param}' appears twice")));
             }
+            let symbol = self.interner.intern(&param);
             params.push(Param {
                 name: param,
+                symbol,
                 optional,
             });
             let separator = self.next_raw()?;
@@ -187,8 +192,10 @@ impl Evaluator<'_> {
         self.push_scope();
         for (param, arg) in def.params.iter().zip(args) {
             match arg {
-                Argument::ByValue(value) => self.declare_local(&param.name, value),
-                Argument::ByReference(slot) => self.bind(&param.name, slot),
+                Argument::ByValue(value) => {
+                    self.declare_local_symbol(param.symbol, value);
+                }
+                Argument::ByReference(slot) => self.bind(param.symbol, slot),
                 Argument::Omitted => {}
             }
         }
@@ -197,11 +204,9 @@ impl Evaluator<'_> {
             file: def.file,
             pos: def.body_start,
             end: def.body_end,
-            kind: FrameKind::Macro {
-                name: def.name.clone(),
-            },
+            entered_at: Some((call.file, call.range())),
+            kind: FrameKind::Macro { def },
             conds: Vec::new(),
-            entered_at: Some(self.span(call)),
         });
         Ok(())
     }

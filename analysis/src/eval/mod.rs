@@ -190,7 +190,7 @@ pub fn declared_function(
     let options = EvalOptions::default();
     let mut evaluator = Evaluator::new(files, &options, &crate::geometry::NoGeometry);
     evaluator.run(main).ok()?;
-    let slot = evaluator.scopes[0].get(name)?.clone();
+    let slot = evaluator.local_slot(0, name)?;
     let value = slot.borrow();
     match &*value {
         value::Value::Function(function) => Some(function.clone()),
@@ -209,6 +209,8 @@ pub(crate) struct Evaluator<'a> {
     frames: Vec<Frame>,
     /// Symbol tables: the global one first, then one per include file and macro call.
     scopes: Vec<Scope>,
+    /// The names the tables know by number.
+    interner: symbols::Interner,
     /// Emptied tables of ended scopes, for `push_scope` to reuse.
     spare_scopes: Vec<Scope>,
     /// Tokens given back by the parsers, read again before the stream.
@@ -248,6 +250,8 @@ pub(crate) struct Evaluator<'a> {
     expr_cache: expr_cache::ExprCache,
     /// The renderer's prepared `trace()` and `inside()` answers for recent objects.
     object_queries: object_queries::ObjectQueries,
+    /// Where skips over branches not taken ended, to jump there the next time.
+    skips: stream::Skips,
 }
 
 impl<'a> Evaluator<'a> {
@@ -256,12 +260,13 @@ impl<'a> Evaluator<'a> {
         options: &'a EvalOptions,
         geometry: &'a dyn crate::geometry::Geometry,
     ) -> Self {
+        let mut interner = symbols::Interner::default();
         let globals: Scope = options
             .declared
             .iter()
             .map(|(name, value)| {
                 let slot = std::rc::Rc::new(std::cell::RefCell::new(value::Value::Float(*value)));
-                (name.clone(), slot)
+                (interner.intern(name), slot)
             })
             .collect();
         Evaluator {
@@ -273,6 +278,7 @@ impl<'a> Evaluator<'a> {
             sources: Sources::default(),
             frames: Vec::new(),
             scopes: vec![globals],
+            interner,
             spare_scopes: Vec::new(),
             pushed: Vec::new(),
             declaring: Vec::new(),
@@ -302,6 +308,7 @@ impl<'a> Evaluator<'a> {
             default_importance: 1.0,
             expr_cache: expr_cache::ExprCache::default(),
             object_queries: object_queries::ObjectQueries::default(),
+            skips: stream::Skips::default(),
         }
     }
 
@@ -390,21 +397,22 @@ impl<'a> Evaluator<'a> {
     /// Notes where the failing include file was included and the failing macro called.
     fn add_context(&self, error: &mut Diagnostic) {
         for frame in self.frames.iter().rev() {
-            let Some(span) = &frame.entered_at else {
+            let Some((file, range)) = frame.entered_at else {
                 continue;
             };
             let message = match &frame.kind {
-                FrameKind::Macro { name } => format!("in macro '{name}' called here"),
+                FrameKind::Macro { def } => format!("in macro '{}' called here", def.name),
                 FrameKind::Include => format!(
                     "in '{}' included here",
                     self.files[frame.file as usize].name
                 ),
                 FrameKind::Main => continue,
             };
-            error.related.push(syntax::Related {
-                span: span.clone(),
-                message,
-            });
+            let span = syntax::Span {
+                file: self.files[file as usize].name.clone(),
+                range,
+            };
+            error.related.push(syntax::Related { span, message });
         }
     }
 
@@ -449,19 +457,27 @@ impl<'a> Evaluator<'a> {
         }
     }
 
-    /// Counts one unit of work against the step budget.
+    /// Counts one unit of work against the step budget. Every token read counts one, so
+    /// the count stays inline and the error is made apart.
+    #[inline]
     fn spend_step(&mut self) -> Result<()> {
         self.steps += 1;
         if self.steps > self.options.budgets.steps {
-            return Err(self.budget_error(
-                format!(
-                    "evaluation step budget of {} exceeded",
-                    self.options.budgets.steps
-                ),
-                "max-steps",
-            ));
+            return Err(self.step_budget_error());
         }
         Ok(())
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn step_budget_error(&self) -> Box<Diagnostic> {
+        self.budget_error(
+            format!(
+                "evaluation step budget of {} exceeded",
+                self.options.budgets.steps
+            ),
+            "max-steps",
+        )
     }
 
     fn budget_error(&self, message: String, option: &str) -> Box<Diagnostic> {

@@ -19,6 +19,18 @@ pub enum SkipStop {
     Break,
 }
 
+/// Where a skip over a branch not taken ended: the position after it, the steps it took,
+/// and the directive it stopped at.
+#[derive(Debug, Clone, Copy)]
+pub struct Skip {
+    end: u32,
+    steps: u32,
+    stop: SkipStop,
+}
+
+/// Skips that ended, by file, starting position and whether they stopped at branches.
+pub type Skips = rustc_hash::FxHashMap<(FileId, u32, bool), Skip>;
+
 impl Evaluator<'_> {
     /// The next token after directives and macro expansion. At the end of the main file it
     /// returns an `EOF`-like token of kind `ERROR_NODE` placed at the end of the text.
@@ -58,7 +70,10 @@ impl Evaluator<'_> {
                     self.run_directive(raw, keyword)?;
                 }
                 IDENT => {
-                    let slot = self.lookup(self.text(&raw));
+                    // The identifier just read is the token before the frame's position.
+                    let frame = self.frames.last().expect("the main frame is never popped");
+                    let symbol = self.symbol_at(frame.file, frame.pos - 1);
+                    let slot = self.lookup_symbol(symbol);
                     let token = Token { slot, ..raw };
                     if let Some(def) = macro_of(&token) {
                         if self.macro_calls_held {
@@ -252,7 +267,37 @@ impl Evaluator<'_> {
     /// Skips the tokens of a branch not taken, up to the `#end` (consumed) or, when
     /// `stop_at_branches`, to an `#else`, `#elseif`, `#case`, `#range` or `#break` at the
     /// same nesting depth (consumed, with the `#`).
+    ///
+    /// Where a skip from a place ends depends on the tokens only, and loops and macros skip
+    /// the same branches over and over: a skip that ended is remembered, and the next one
+    /// from the same place jumps, counting the same steps.
     pub fn skip_block(&mut self, stop_at_branches: bool, opened: &Token) -> Result<SkipStop> {
+        let frame = self.frames.last().expect("the main frame is never popped");
+        let key = (frame.file, frame.pos as u32, stop_at_branches);
+        if let Some(skip) = self.skips.get(&key) {
+            // A jump past the frame's end, or to where the step budget runs out, is
+            // scanned instead, to stop at the same token with the same error.
+            let steps = self.steps + u64::from(skip.steps);
+            if skip.end as usize <= frame.end && steps <= self.options.budgets.steps {
+                let (end, stop) = (skip.end as usize, skip.stop);
+                self.steps = steps;
+                self.frames.last_mut().expect("checked above").pos = end;
+                return Ok(stop);
+            }
+        }
+        let steps_before = self.steps;
+        let stop = self.scan_block(stop_at_branches, opened)?;
+        let skip = Skip {
+            end: self.position() as u32,
+            steps: (self.steps - steps_before) as u32,
+            stop,
+        };
+        self.skips.insert(key, skip);
+        Ok(stop)
+    }
+
+    /// [`Self::skip_block`] token by token.
+    fn scan_block(&mut self, stop_at_branches: bool, opened: &Token) -> Result<SkipStop> {
         let mut depth = 0usize;
         let frame_index = self.frames.len() - 1;
         loop {

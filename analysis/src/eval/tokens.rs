@@ -4,7 +4,7 @@
 use super::value::Slot;
 use syntax::SyntaxKind::{self, *};
 use syntax::lexer;
-use syntax::{Span, TextRange, TextSize};
+use syntax::{TextRange, TextSize};
 
 /// An index into the evaluator's list of loaded files.
 pub type FileId = u32;
@@ -102,7 +102,7 @@ pub enum FrameKind {
     Include,
     /// A macro body; its parameters and `#local`s live in the scope it pushed.
     Macro {
-        name: String,
+        def: std::rc::Rc<super::macros::MacroDef>,
     },
 }
 
@@ -116,7 +116,7 @@ pub enum Cond {
     While { cond_pos: usize, opened_at: u32 },
     /// Inside a `#for` body.
     For {
-        name: String,
+        variable: super::symbols::Symbol,
         end: f64,
         step: f64,
         body_pos: usize,
@@ -140,7 +140,7 @@ pub struct Frame {
     pub kind: FrameKind,
     pub conds: Vec<Cond>,
     /// Where this frame was entered from (the `#include` or the macro call), for messages.
-    pub entered_at: Option<Span>,
+    pub entered_at: Option<(FileId, TextRange)>,
 }
 
 /// True for the directives that open a block closed by `#end`.
