@@ -235,7 +235,7 @@ pub const FLAGS: &[Flag] = &[
         "none",
         int(0, 9),
         "Compression",
-        "PNG deflate level, 0 to 9",
+        "PNG deflate level, 0 to 9; without it a fast deflate (larger files)",
     ),
 ];
 
