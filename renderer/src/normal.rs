@@ -166,7 +166,7 @@ fn bumped(
     // The bump patterns' own pushes take the point after the classic turbulence, as the
     // patterns' values do (the pyramid below gets it through the pattern's evaluation).
     let turbulent = match &pattern.turbulence {
-        Some(t) => local + pattern::warp::displacement(t, local),
+        Some(t) => pattern::warp::turbulent(t, local),
         None => local,
     };
     let bumped = match pattern.kind {

@@ -125,13 +125,9 @@ pub fn taps(bitmap: &Bitmap, u: f64, v: f64) -> Taps {
 pub fn image_map_colour(map: &ImageMap, p: DVec3) -> Colour {
     // Warps and turbulence move the point as they move a pattern's, the last written
     // first and the classic turbulence innermost.
-    let p = map
-        .warps
-        .iter()
-        .rev()
-        .fold(p, |p, warp| super::warp::apply(warp, p));
+    let p = super::warp::through_all(&map.warps, p);
     let p = match &map.turbulence {
-        Some(t) => p + super::warp::displacement(t, p),
+        Some(t) => super::warp::turbulent(t, p),
         None => p,
     };
     let Some((u, v)) = uv(&map.bitmap, p) else {

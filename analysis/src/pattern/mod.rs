@@ -280,7 +280,7 @@ pub fn entry_point(pattern: &Pattern, world: DVec3) -> Option<DVec3> {
     }
     let inner = warped(pattern, pattern.transform.inverse.transform_point3(world));
     let inner = match turbulence {
-        Some(t) => inner + warp::displacement(t, inner),
+        Some(t) => warp::turbulent(t, inner),
         None => inner,
     };
     Some(all_transforms(pattern).point(inner))
@@ -288,18 +288,14 @@ pub fn entry_point(pattern: &Pattern, world: DVec3) -> Option<DVec3> {
 
 /// A point of pattern space carried through the pattern's warps, the last written first.
 pub fn warped(pattern: &Pattern, local: DVec3) -> DVec3 {
-    pattern
-        .warps
-        .iter()
-        .rev()
-        .fold(local, |p, warp| warp::apply(warp, p))
+    warp::through_all(&pattern.warps, local)
 }
 
 /// The pattern's value at a point that has been through its warps already.
 pub fn evaluate_warped(pattern: &Pattern, p: DVec3, facing: Option<&Facing>) -> PatternValue {
     let classic = pattern.turbulence.as_ref();
     let turbulent = |p: DVec3| match classic {
-        Some(t) => p + warp::displacement(t, p),
+        Some(t) => warp::turbulent(t, p),
         None => p,
     };
     // The scalar turbulence marble and the spirals add to their value.

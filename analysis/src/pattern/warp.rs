@@ -8,10 +8,16 @@ use crate::scene::{Turbulence, Warp};
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
+/// Where `p` goes under the warps, the last written first (the order in which they act on
+/// the point a pattern is evaluated at).
+pub fn through_all(warps: &[Warp], p: DVec3) -> DVec3 {
+    warps.iter().rev().fold(p, |p, warp| apply(warp, p))
+}
+
 /// Where `p` goes under the warp.
 pub fn apply(warp: &Warp, p: DVec3) -> DVec3 {
     match warp {
-        Warp::Turbulence(t) => p + displacement(t, p),
+        Warp::Turbulence(t) => turbulent(t, p),
         Warp::Transform(t) => t.inverse.transform_point3(p),
         Warp::Repeat {
             direction,
@@ -56,8 +62,13 @@ pub fn apply(warp: &Warp, p: DVec3) -> DVec3 {
     }
 }
 
-/// The classic turbulence displacement of a point.
-pub fn displacement(t: &Turbulence, p: DVec3) -> DVec3 {
+/// Where turbulence moves `p`.
+pub fn turbulent(t: &Turbulence, p: DVec3) -> DVec3 {
+    p + displacement(t, p)
+}
+
+/// How far turbulence moves `p`.
+fn displacement(t: &Turbulence, p: DVec3) -> DVec3 {
     noise::turbulence(p, t.octaves, t.omega, t.lambda) * t.amount
 }
 
