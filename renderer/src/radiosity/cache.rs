@@ -47,55 +47,80 @@ struct Cell {
 }
 
 /// Where a cell's samples are and how far they reach, in single precision relative to the
-/// cell's centre and side by side, so that a lookup turns most of them away with a few
-/// vector instructions before looking at a sample itself.
+/// cell's centre, [`LANES`] side by side, so that a lookup turns most of them away with a
+/// few vector instructions before looking at a sample itself.
 #[derive(Debug, Clone, Default)]
 struct Spots {
-    x: Vec<f32>,
-    y: Vec<f32>,
-    z: Vec<f32>,
-    reuse: Vec<f32>,
-    sample: Vec<u32>,
+    chunks: Vec<SpotChunk>,
+    len: usize,
 }
 
-/// How many spots the prefilter tests at once.
-const CHUNK: usize = 32;
+/// How many spots the prefilter tests at once: a fixed count, so that the test of a chunk
+/// compiles to vector instructions with no bounds checks.
+const LANES: usize = 8;
+
+/// The spots of one chunk; lanes past the last sample sit infinitely far away.
+#[derive(Debug, Clone, Copy)]
+struct SpotChunk {
+    x: [f32; LANES],
+    y: [f32; LANES],
+    z: [f32; LANES],
+    reuse: [f32; LANES],
+    sample: [u32; LANES],
+}
+
+const EMPTY_CHUNK: SpotChunk = SpotChunk {
+    x: [f32::INFINITY; LANES],
+    y: [f32::INFINITY; LANES],
+    z: [f32::INFINITY; LANES],
+    reuse: [0.0; LANES],
+    sample: [NONE; LANES],
+};
 
 impl Spots {
     fn push(&mut self, offset: DVec3, reuse: f64, sample: u32) {
-        self.x.push(offset.x as f32);
-        self.y.push(offset.y as f32);
-        self.z.push(offset.z as f32);
-        self.reuse.push(reuse as f32);
-        self.sample.push(sample);
+        let lane = self.len % LANES;
+        if lane == 0 {
+            self.chunks.push(EMPTY_CHUNK);
+        }
+        let chunk = self
+            .chunks
+            .last_mut()
+            .expect("a chunk was pushed for lane 0");
+        chunk.x[lane] = offset.x as f32;
+        chunk.y[lane] = offset.y as f32;
+        chunk.z[lane] = offset.z as f32;
+        chunk.reuse[lane] = reuse as f32;
+        chunk.sample[lane] = sample;
+        self.len += 1;
     }
 
     /// Calls `f` with each sample that may lie within `bound` reuse distances of the
-    /// point at `offset` from the cell's centre (`slack` covers single precision), until
-    /// `f` returns `true`; returns whether it did.
+    /// point at `offset` from the cell's centre (`slack` covers single precision), in the
+    /// order they were pushed, until `f` returns `true`; returns whether it did.
     fn near(&self, offset: DVec3, bound: f64, slack: f64, mut f: impl FnMut(u32) -> bool) -> bool {
         let (qx, qy, qz) = (offset.x as f32, offset.y as f32, offset.z as f32);
         let (b, slack) = (bound as f32 * 1.001, slack as f32);
-        let mut start = 0;
-        while start < self.sample.len() {
-            let end = (start + CHUNK).min(self.sample.len());
-            let mut near = [false; CHUNK];
-            let lanes = self.x[start..end]
-                .iter()
-                .zip(&self.y[start..end])
-                .zip(&self.z[start..end])
-                .zip(&self.reuse[start..end]);
-            for (hit, (((x, y), z), reuse)) in near.iter_mut().zip(lanes) {
-                let (dx, dy, dz) = (x - qx, y - qy, z - qz);
-                let reach = b * reuse + slack;
-                *hit = dx * dx + dy * dy + dz * dz <= reach * reach;
+        for chunk in &self.chunks {
+            // The squared distance less the squared reach, whose sign bit marks a spot
+            // within reach: a form the compiler turns into a vector mask.
+            let mut beyond = [0f32; LANES];
+            for (k, beyond) in beyond.iter_mut().enumerate() {
+                let (dx, dy, dz) = (chunk.x[k] - qx, chunk.y[k] - qy, chunk.z[k] - qz);
+                let reach = b * chunk.reuse[k] + slack;
+                *beyond = dx * dx + dy * dy + dz * dz - reach * reach;
             }
-            for (k, &hit) in near[..end - start].iter().enumerate() {
-                if hit && f(self.sample[start + k]) {
+            let mut near = 0u32;
+            for (k, beyond) in beyond.iter().enumerate() {
+                near |= (beyond.to_bits() >> 31) << k;
+            }
+            while near != 0 {
+                let k = near.trailing_zeros() as usize;
+                near &= near - 1;
+                if f(chunk.sample[k]) {
                     return true;
                 }
             }
-            start = end;
         }
         false
     }
