@@ -5,7 +5,7 @@
 //! pins down to 1e-7. The normal is the gradient of |h_n|² with respect to the point.
 
 use super::Root;
-use crate::fast_math::{max, min};
+use crate::fast_math::{max, min, round};
 use crate::ray::Ray;
 use analysis::scene::math_shapes::{JuliaAlgebra, JuliaFunction};
 use glam::{DVec3, DVec4};
@@ -302,7 +302,7 @@ impl Julia {
                 }
                 let x = a as f64 + width as f64 * (fa / (fa - fb));
                 // Rounded to the grid, strictly inside the bracket (NaN goes to its start).
-                (x.round() as u64).clamp(a + 1, b - 1)
+                (round(x) as u64).clamp(a + 1, b - 1)
             } else {
                 a + width / 2
             };
