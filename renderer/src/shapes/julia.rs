@@ -77,7 +77,10 @@ impl Julia {
     /// The orbit of `h`: whether it stays bounded, how far past the escape norm it went,
     /// and with `DISTANCE` a lower bound of the distance to the set when it escapes (the
     /// step a march may take). Without it the logarithms of the estimate are skipped: a
-    /// refinement only asks for the side and the value.
+    /// refinement only asks for the side and the value. Inlined, so that the orbit's
+    /// answer stays in locals rather than going through memory, as a returned structure
+    /// does in WebAssembly.
+    #[inline(always)]
     fn orbit<const DISTANCE: bool>(&self, h: DVec4) -> Orbit {
         match (self.algebra, self.function) {
             (JuliaAlgebra::Quaternion, JuliaFunction::Cube) => {
@@ -90,6 +93,7 @@ impl Julia {
 
     /// Quaternion squares or cubes. Quaternion norms multiply, so the derivative's norm
     /// for the distance estimate is the power times the product of the orbit's norms.
+    #[inline(always)]
     fn quaternion_orbit<const DISTANCE: bool>(&self, h: DVec4, power: f64) -> Orbit {
         let p = self.parameter;
         let (mut x, mut y, mut z, mut w) = (h.x, h.y, h.z, h.w);
@@ -135,6 +139,7 @@ impl Julia {
 
     /// Hypercomplex iteration: the algebra splits into two complex planes,
     /// (x - w) + i(y + z) and (x + w) + i(y - z), where f acts on each.
+    #[inline(never)]
     fn hypercomplex_orbit<const DISTANCE: bool>(&self, h: DVec4) -> Orbit {
         let (mut a, mut b) = split(h);
         let (pa, pb) = split(self.parameter);
