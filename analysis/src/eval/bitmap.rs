@@ -1,16 +1,16 @@
 //! The image statements' shared parts: the file at their head (`[TYPE] "name" [gamma G]
 //! [premultiplied B]`), read through the evaluation's file source and decoded once per
 //! evaluation, and the bitmap modifiers (`map_type`, `once`, `interpolate`). Then the
-//! bodies of `image_map`, `image_pattern` and `bump_map` built from them.
+//! bodies of `image_map`, `image_pattern`, `bump_map` and `material_map` built from them.
 
 use super::tokens::Token;
 use super::{Evaluator, Result};
 use crate::image::{self, FileGamma, Image, ImageFormat};
 use crate::pattern::density_file::DensityGrid;
-use crate::scene::Transform;
 use crate::scene::bitmap::{
     Bitmap, ImageMap, ImagePattern, ImageValue, Interpolation, MapType, PaletteAmounts,
 };
+use crate::scene::{BlendMap, Pattern, PatternKind, Texture, Transform};
 use std::sync::Arc;
 use syntax::SyntaxKind::*;
 
@@ -288,6 +288,48 @@ impl Evaluator<'_> {
         }
     }
 
+    /// `{ FILE [modifiers] texture {...}... }` after `material_map`: a texture chosen by
+    /// each pixel's palette index (or red value), counting round the list. POV-Ray 3.7
+    /// takes no transformation inside the map, though its manual shows one.
+    pub(super) fn material_map_body(&mut self, keyword: &Token) -> Result<Texture> {
+        self.expect(L_BRACE, "'{'")?;
+        let file = self.bitmap_file()?;
+        let mut image = ImagePattern {
+            bitmap: new_bitmap(Self::data_values(&file)),
+            value: ImageValue::MaterialIndex,
+        };
+        let mut entries = Vec::new();
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                R_BRACE => break,
+                TEXTURE_KW => entries.push((entries.len() as f64, self.texture_body()?)),
+                _ if entries.is_empty() && self.bitmap_modifier(&mut image.bitmap, &token)? => {}
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected a bitmap modifier, texture or '}}' in a material_map, \
+                             found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+        if entries.is_empty() {
+            return Err(self.error_at(keyword, "a material_map needs at least one texture"));
+        }
+        let kind = PatternKind::MaterialMap {
+            image: Box::new(image),
+            textures: entries.len(),
+        };
+        Ok(Texture::Pattern {
+            pattern: Box::new(Pattern::new(kind)),
+            map: BlendMap { entries },
+        })
+    }
+
     /// `{ FILE [modifiers] }` after `image_pattern`.
     pub(super) fn image_pattern_body(&mut self) -> Result<ImagePattern> {
         self.expect(L_BRACE, "'{'")?;
@@ -430,6 +472,35 @@ mod tests {
         assert_eq!(
             error(&scene("png \"map.png\" map_type 3"), files),
             "not supported yet: map_type 3 58..59 []"
+        );
+    }
+
+    #[test]
+    fn material_maps_list_textures_after_the_image_and_its_modifiers() {
+        let mut files = MemoryFiles::new();
+        files.insert_bytes("map.png", PIXEL);
+        let scene =
+            |body: &str| format!("plane {{ z, 0 texture {{ material_map {{ {body} }} }} }}");
+        for ok in [
+            "png \"map.png\" texture { pigment { rgb 1 } }",
+            "png \"map.png\" map_type 1 once interpolate 2 texture { pigment { rgb 1 } } texture { }",
+        ] {
+            let ok = files.clone().with("scene.pov", scene(ok));
+            assert!(!evaluate("scene.pov", &ok, &EvalOptions::default()).has_errors());
+        }
+        assert_eq!(
+            error(&scene("png \"map.png\" once"), files.clone()),
+            "a material_map needs at least one texture 23..35 []"
+        );
+        // POV-Ray 3.7 takes neither a transformation nor a bitmap modifier after the
+        // textures.
+        assert_eq!(
+            error(&scene("png \"map.png\" texture { } scale 2"), files.clone()),
+            "expected a bitmap modifier, texture or '}' in a material_map, found 'scale' 64..69 []"
+        );
+        assert_eq!(
+            error(&scene("png \"map.png\" texture { } once"), files),
+            "expected a bitmap modifier, texture or '}' in a material_map, found 'once' 64..68 []"
         );
     }
 

@@ -83,7 +83,8 @@ impl Evaluator<'_> {
                     transform_texture(&mut texture, &t);
                 }
                 TILES_KW => texture = self.tiles()?,
-                MATERIAL_MAP_KW | IMAGE_MAP_KW => {
+                MATERIAL_MAP_KW => texture = self.material_map_body(&token)?,
+                IMAGE_MAP_KW => {
                     return Err(self.unsupported(&token, self.text(&token)));
                 }
                 kind if pattern_keyword(kind) => {

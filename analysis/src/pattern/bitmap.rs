@@ -181,6 +181,10 @@ fn pixel_value(image: &Image, value: ImageValue, x: usize, y: usize) -> f64 {
         // POV-Ray's `use_alpha` reads transparency: 0 where the image is opaque.
         ImageValue::Alpha => 1.0 - f64::from(a),
         ImageValue::Index => f64::from(image.index(x, y).unwrap_or(0)) / 255.0,
+        ImageValue::MaterialIndex => match image.index(x, y) {
+            Some(index) => f64::from(index) / 255.0,
+            None => (f64::from(r) * 255.0).round() / 255.0,
+        },
         ImageValue::Grey => {
             let grey = 0.297 * f64::from(r) + 0.589 * f64::from(g) + 0.114 * f64::from(b);
             grey * f64::from(a)

@@ -320,6 +320,18 @@ pub fn evaluate_warped(pattern: &Pattern, p: DVec3, facing: Option<&Facing>) -> 
         PatternKind::Object(object) => {
             return PatternValue::Block(usize::from(object.contains(turbulent(p))));
         }
+        PatternKind::MaterialMap { image, textures } => {
+            // An interpolated index is cut down to a whole one before it chooses. Measured
+            // on POV-Ray 3.7: red values count round the list, as its manual says, but
+            // palette indices past the list take its last texture.
+            let index = (bitmap::image_value(image, p) * 255.0 + 1e-6).floor() as usize;
+            let chosen = if image.bitmap.image.indices.is_some() {
+                index.min(textures - 1)
+            } else {
+                index % textures
+            };
+            return PatternValue::Block(chosen);
+        }
         PatternKind::PigmentPattern(pigment) => pigment_colour(pigment, turbulent(p)).grey_value(),
         PatternKind::Marble => p.x + scalar_turbulence(p),
         PatternKind::Spiral1 { arms } => spiral::spiral1(p, *arms, scalar_turbulence(p)),

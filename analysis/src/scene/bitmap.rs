@@ -92,6 +92,9 @@ pub enum ImageValue {
     Index,
     /// The alpha channel (`use_alpha`).
     Alpha,
+    /// A material map's texture number over 255: the palette index, or in an image
+    /// without a palette the 8-bit value of the red channel.
+    MaterialIndex,
 }
 
 /// `image_pattern { ... }`, and the heights of a `bump_map`.

@@ -139,6 +139,12 @@ pub enum PatternKind {
     Fractal(Box<Fractal>),
     /// `image_pattern { }`, and the heights of a `bump_map`.
     Image(Box<super::bitmap::ImagePattern>),
+    /// `material_map { }`: the image's palette index (or red value) chooses one of
+    /// `textures` textures.
+    MaterialMap {
+        image: Box<super::bitmap::ImagePattern>,
+        textures: usize,
+    },
     /// `slope { }`: which way the surface faces, optionally blended with a gradient.
     Slope(Box<Slope>),
     /// `aoi`: the angle between the ray and the surface normal.
