@@ -156,6 +156,12 @@ enum Node {
     MulAddK(u32, u32, f64),
     SqrtAddK(u32, f64),
     AddMulK(u32, u32, f64),
+    /// a·k1 + k2: a scaled value used once, and the constant added to it.
+    MulKAddK(u32, f64, f64),
+    /// √(a·b + k): a product plus a constant used once, under a root.
+    SqrtMulAddK(u32, u32, f64),
+    /// |a| - b: an absolute value used once, and what is taken from it.
+    AbsSub(u32, u32),
     Select3(u32, u32, u32),
     Select4(u32, u32, u32, u32),
     Min(Vec<u32>),
@@ -217,6 +223,10 @@ enum Inst {
     MulAddK(u8, [u8; 2], f64),
     SqrtAddK(u8, u8, f64),
     AddMulK(u8, [u8; 2], f64),
+    /// o = a·k1 + k2, √(a·b + k) and |a| - b.
+    MulKAddK(u8, u8, [f64; 2]),
+    SqrtMulAddK(u8, [u8; 2], f64),
+    AbsSub(u8, [u8; 2]),
     /// o = a + k, a·k, k - a, a / k and k / a.
     AddK(u8, u8, f64),
     MulK(u8, u8, f64),
@@ -303,7 +313,10 @@ impl Builder {
             | Node::ScaledTrig(..)
             | Node::MulAddK(..)
             | Node::SqrtAddK(..)
-            | Node::AddMulK(..) => None,
+            | Node::AddMulK(..)
+            | Node::MulKAddK(..)
+            | Node::SqrtMulAddK(..)
+            | Node::AbsSub(..) => None,
         };
         if let Some(key) = &key
             && let Some(&index) = self.known.get(key)
@@ -388,6 +401,11 @@ impl Builder {
                     let a = stack.pop()?;
                     let zero = self.push(Node::Const(0.0));
                     self.push(Node::Binary(Binary::Eq, a, zero))
+                }
+                // A square is the product a·a, to the bit, so that it fuses as products do.
+                Op::Unary(Unary::Sqr) => {
+                    let a = stack.pop()?;
+                    self.push(Node::Binary(Binary::Mul, a, a))
                 }
                 Op::Unary(f) => {
                     let a = stack.pop()?;
@@ -567,7 +585,6 @@ impl Program {
                     None => Some(match f {
                         Unary::Abs => Inst::Abs(out, r(a)),
                         Unary::Sqrt => Inst::Sqrt(out, r(a)),
-                        Unary::Sqr => Inst::Mul(out, r(a), r(a)),
                         _ => Inst::Unary(out, *f, r(a)),
                     }),
                 },
@@ -596,6 +613,9 @@ impl Program {
                 Node::MulAddK(a, b, k) => Some(Inst::MulAddK(out, [r(a), r(b)], *k)),
                 Node::SqrtAddK(a, k) => Some(Inst::SqrtAddK(out, r(a), *k)),
                 Node::AddMulK(a, b, k) => Some(Inst::AddMulK(out, [r(a), r(b)], *k)),
+                Node::MulKAddK(a, k1, k2) => Some(Inst::MulKAddK(out, r(a), [*k1, *k2])),
+                Node::SqrtMulAddK(a, b, k) => Some(Inst::SqrtMulAddK(out, [r(a), r(b)], *k)),
+                Node::AbsSub(a, b) => Some(Inst::AbsSub(out, [r(a), r(b)])),
                 Node::ScaledTrig(f, a, k) => match partner[i] {
                     Some(p) => {
                         let other = register[p as usize];
@@ -710,6 +730,9 @@ impl Program {
                 Inst::MulAddK(o, [a, b], k) => r[at(o)] = r[at(a)] * r[at(b)] + k,
                 Inst::SqrtAddK(o, a, k) => r[at(o)] = r[at(a)].sqrt() + k,
                 Inst::AddMulK(o, [a, b], k) => r[at(o)] = (r[at(a)] + r[at(b)]) * k,
+                Inst::MulKAddK(o, a, [k1, k2]) => r[at(o)] = r[at(a)] * k1 + k2,
+                Inst::SqrtMulAddK(o, [a, b], k) => r[at(o)] = (r[at(a)] * r[at(b)] + k).sqrt(),
+                Inst::AbsSub(o, [a, b]) => r[at(o)] = r[at(a)].abs() - r[at(b)],
                 Inst::AddK(o, a, k) => r[at(o)] = r[at(a)] + k,
                 Inst::MulK(o, a, k) => r[at(o)] = r[at(a)] * k,
                 Inst::KSub(o, a, k) => r[at(o)] = k - r[at(a)],
@@ -803,8 +826,11 @@ fn operands(node: &Node) -> Vec<u32> {
         Node::Select4(a, b, c, d) => vec![*a, *b, *c, *d],
         Node::MulMulAdd(v) => v.to_vec(),
         Node::Dot3(v) => v.to_vec(),
-        Node::ScaledTrig(_, a, _) | Node::SqrtAddK(a, _) => vec![*a],
-        Node::MulAddK(a, b, _) | Node::AddMulK(a, b, _) => vec![*a, *b],
+        Node::ScaledTrig(_, a, _) | Node::SqrtAddK(a, _) | Node::MulKAddK(a, _, _) => vec![*a],
+        Node::MulAddK(a, b, _)
+        | Node::AddMulK(a, b, _)
+        | Node::SqrtMulAddK(a, b, _)
+        | Node::AbsSub(a, b) => vec![*a, *b],
         Node::Min(v) | Node::Max(v) => v.clone(),
         Node::Call(_, v) | Node::CallPart(_, v, _) | Node::Internal(_, v) => v.clone(),
         Node::Sum {
@@ -917,28 +943,41 @@ fn sum_of_products(nodes: &[Node], uses: &[u32], x: u32, y: u32, b: u32) -> (Nod
     }
 }
 
-/// Rewrites, in place, a constant added to a product or a square root, or multiplied with
-/// a sum, into one node with that operand when nothing else reads it: one instruction
-/// instead of two, with the same operations in the same order, so values do not change.
+/// Rewrites, in place, a constant added to a product, a square root or a scaled value, or
+/// multiplied with a sum; the root of a product plus a constant; and the absolute value
+/// that a difference starts from: each into one node with its operand when nothing else
+/// reads that operand, one instruction instead of two with the same operations in the same
+/// order, so values do not change.
 fn fuse_constant_tails(nodes: &mut [Node], live: &[bool], result: u32) {
     let mut uses = use_counts(nodes, live, result);
     for i in 0..nodes.len() {
         if !live[i] {
             continue;
         }
-        // a + k, and a - k, which is a + (-k) to the bit.
         let (a, fused) = match nodes[i] {
+            // a + k, and a - k, which is a + (-k) to the bit.
             Node::WithConstant(op @ (Binary::Add | Binary::Sub), a, k, false) => {
                 let k = if op == Binary::Sub { -k } else { k };
                 let fused = match nodes[a as usize] {
                     Node::Binary(Binary::Mul, x, y) => Some(Node::MulAddK(x, y, k)),
                     Node::Unary(Unary::Sqrt, x) => Some(Node::SqrtAddK(x, k)),
-                    _ => None,
+                    ref scaled => scale(scaled).map(|(x, k1)| Node::MulKAddK(x, k1, k)),
                 };
                 (a, fused)
             }
-            Node::WithConstant(Binary::Mul, a, k, _) => match nodes[a as usize] {
-                Node::Binary(Binary::Add, x, y) => (a, Some(Node::AddMulK(x, y, k))),
+            ref scaled @ Node::WithConstant(..) => match scale(scaled) {
+                Some((a, k)) => match nodes[a as usize] {
+                    Node::Binary(Binary::Add, x, y) => (a, Some(Node::AddMulK(x, y, k))),
+                    _ => (a, None),
+                },
+                None => continue,
+            },
+            Node::Unary(Unary::Sqrt, a) => match nodes[a as usize] {
+                Node::MulAddK(x, y, k) => (a, Some(Node::SqrtMulAddK(x, y, k))),
+                _ => (a, None),
+            },
+            Node::Binary(Binary::Sub, a, b) => match nodes[a as usize] {
+                Node::Unary(Unary::Abs, x) => (a, Some(Node::AbsSub(x, b))),
                 _ => (a, None),
             },
             _ => continue,
@@ -949,6 +988,16 @@ fn fuse_constant_tails(nodes: &mut [Node], live: &[bool], result: u32) {
             uses[a as usize] = 0;
             nodes[i] = node;
         }
+    }
+}
+
+/// a·k for a node that multiplies by k, or divides by a power of two (exactly a product
+/// by its reciprocal): the operand and the factor.
+fn scale(node: &Node) -> Option<(u32, f64)> {
+    match *node {
+        Node::WithConstant(Binary::Mul, a, k, _) => Some((a, k)),
+        Node::WithConstant(Binary::Div, a, k, false) => Some((a, exact_reciprocal(k)?)),
+        _ => None,
     }
 }
 
@@ -1220,6 +1269,61 @@ mod tests {
         let program = Program::compile(&shared, 2).unwrap();
         assert_eq!(program.eval(&[1.5, -0.25]), shared.eval(&[1.5, -0.25]));
         assert_count(&program, |i| matches!(i, Inst::AddMulK(..)), 0);
+    }
+
+    #[test]
+    fn scaled_offsets_roots_of_products_and_absolute_differences_are_one_instruction() {
+        // a = |x| - (y·0.32/16 + 0.15), b = z; (a + b + √((a - b)·(a - b) + 0.0625)) / 2
+        let f = code(
+            &["x", "y", "z"],
+            vec![
+                Op::Param(0),
+                Op::Unary(Unary::Abs),
+                Op::Const(0.15),
+                Op::Const(0.32),
+                Op::Param(1),
+                Op::Mul,
+                Op::Const(16.0),
+                Op::Div,
+                Op::Add,
+                Op::Sub,
+                Op::Param(2),
+                Op::Call(
+                    Arc::new(code(
+                        &["a", "b"],
+                        vec![
+                            Op::Param(0),
+                            Op::Param(1),
+                            Op::Add,
+                            Op::Param(0),
+                            Op::Param(1),
+                            Op::Sub,
+                            Op::Unary(Unary::Sqr),
+                            Op::Const(0.0625),
+                            Op::Add,
+                            Op::Unary(Unary::Sqrt),
+                            Op::Add,
+                            Op::Const(2.0),
+                            Op::Div,
+                        ],
+                    )),
+                    2,
+                ),
+            ],
+        );
+        let program = Program::compile(&f, 3).unwrap();
+        for p in [[0.3, -1.2, 2.5], [10.0, 0.0, -4.0], [-7.5, 3.3, 1e-3]] {
+            assert_eq!(program.eval(&p).to_bits(), f.eval(&p).to_bits(), "{p:?}");
+        }
+        assert_count(&program, |i| matches!(i, Inst::MulKAddK(..)), 1);
+        assert_count(&program, |i| matches!(i, Inst::AbsSub(..)), 1);
+        assert_count(&program, |i| matches!(i, Inst::SqrtMulAddK(..)), 1);
+        assert_count(
+            &program,
+            |i| matches!(i, Inst::AddMulK(_, _, k) if *k == 0.5),
+            1,
+        );
+        assert_count(&program, |_| true, 6);
     }
 
     #[test]
