@@ -219,6 +219,10 @@ enum Inst {
     /// o = a·b + c·d and o = a·b + (c·d + e·f).
     MulMulAdd(u8, [u8; 4]),
     Dot3(u8, [u8; 6]),
+    /// o = a·a + (b·b + c·c): a Dot3 of squares, each operand read once.
+    SumOfSquares(u8, [u8; 3]),
+    /// Both a + b, to the first register, and a - b, to the second.
+    SumDifference([u8; 2], [u8; 2]),
     /// o = a·b + k, √a + k and (a + b)·k.
     MulAddK(u8, [u8; 2], f64),
     SqrtAddK(u8, u8, f64),
@@ -226,6 +230,8 @@ enum Inst {
     /// o = a·k1 + k2, √(a·b + k) and |a| - b.
     MulKAddK(u8, u8, [f64; 2]),
     SqrtMulAddK(u8, [u8; 2], f64),
+    /// o = √(a·a + k): a SqrtMulAddK of a square, its operand read once.
+    SqrtSquareAddK(u8, u8, f64),
     AbsSub(u8, [u8; 2]),
     /// o = a + k, a·k, k - a, a / k and k / a.
     AddK(u8, u8, f64),
@@ -514,9 +520,13 @@ impl Program {
         let live = live_nodes(&nodes, result, params);
         fuse_constant_tails(&mut nodes, &live, result);
         let live = live_nodes(&nodes, result, params);
-        // A sine and a cosine of one argument: the later one is filled by the earlier.
+        // A sine and a cosine of one argument, and a sum and a difference of two: the
+        // later one is filled by the earlier.
         let mut partner: Vec<Option<u32>> = vec![None; n];
-        for (s, c) in trig_pairs(&nodes, &live) {
+        for (s, c) in trig_pairs(&nodes, &live)
+            .into_iter()
+            .chain(sum_difference_pairs(&nodes, &live))
+        {
             let (first, second) = if s < c { (s, c) } else { (c, s) };
             partner[first] = Some(second as u32);
         }
@@ -588,6 +598,19 @@ impl Program {
                         _ => Inst::Unary(out, *f, r(a)),
                     }),
                 },
+                Node::Binary(op @ (Binary::Add | Binary::Sub), a, b) if partner[i].is_some() => {
+                    let other = partner[i].map_or(0, |p| register[p as usize]);
+                    // The difference's operands, in its order: a sum's commute.
+                    let (x, y) = match nodes[partner[i].map_or(i, |p| p as usize)] {
+                        Node::Binary(Binary::Sub, x, y) if *op == Binary::Add => (x, y),
+                        _ => (*a, *b),
+                    };
+                    Some(if *op == Binary::Add {
+                        Inst::SumDifference([out, other], [r(&x), r(&y)])
+                    } else {
+                        Inst::SumDifference([other, out], [r(&x), r(&y)])
+                    })
+                }
                 Node::Binary(op, a, b) => Some(match op {
                     Binary::Add => Inst::Add(out, r(a), r(b)),
                     Binary::Sub => Inst::Sub(out, r(a), r(b)),
@@ -609,11 +632,15 @@ impl Program {
                 Node::MulAdd(a, b, c) => Some(Inst::MulAdd(out, [r(a), r(b), r(c)])),
                 Node::MulSub(a, b, c) => Some(Inst::MulSub(out, [r(a), r(b), r(c)])),
                 Node::MulMulAdd(v) => Some(Inst::MulMulAdd(out, v.map(|a| r(&a)))),
+                Node::Dot3([a, b, c, d, e, f]) if a == b && c == d && e == f => {
+                    Some(Inst::SumOfSquares(out, [r(a), r(c), r(e)]))
+                }
                 Node::Dot3(v) => Some(Inst::Dot3(out, v.map(|a| r(&a)))),
                 Node::MulAddK(a, b, k) => Some(Inst::MulAddK(out, [r(a), r(b)], *k)),
                 Node::SqrtAddK(a, k) => Some(Inst::SqrtAddK(out, r(a), *k)),
                 Node::AddMulK(a, b, k) => Some(Inst::AddMulK(out, [r(a), r(b)], *k)),
                 Node::MulKAddK(a, k1, k2) => Some(Inst::MulKAddK(out, r(a), [*k1, *k2])),
+                Node::SqrtMulAddK(a, b, k) if a == b => Some(Inst::SqrtSquareAddK(out, r(a), *k)),
                 Node::SqrtMulAddK(a, b, k) => Some(Inst::SqrtMulAddK(out, [r(a), r(b)], *k)),
                 Node::AbsSub(a, b) => Some(Inst::AbsSub(out, [r(a), r(b)])),
                 Node::ScaledTrig(f, a, k) => match partner[i] {
@@ -681,23 +708,36 @@ impl Program {
         // The register file is as small as the program allows: it is cleared at every
         // call. A power of two lets indices be masked instead of bounds-checked.
         match self.registers {
-            0..=16 => self.run(&mut [0.0; 16], args),
-            17..=32 => self.run(&mut [0.0; 32], args),
-            33..=64 => self.run(&mut [0.0; 64], args),
-            _ => self.run(&mut [0.0; 256], args),
+            0..=16 => self.run(&mut self.registers_with::<16>(args)),
+            17..=32 => self.run(&mut self.registers_with::<32>(args)),
+            33..=64 => self.run(&mut self.registers_with::<64>(args)),
+            _ => self.run(&mut self.registers_with::<256>(args)),
         }
     }
 
-    /// Three-parameter evaluation, the common case of isosurfaces.
+    /// Three-parameter evaluation, the common case of isosurfaces: the parameters go
+    /// straight into the first registers when the program is small.
     pub fn eval3(&self, x: f64, y: f64, z: f64) -> f64 {
+        if self.params == 3 && self.registers <= 16 {
+            let mut r = [0.0; 16];
+            (r[0], r[1], r[2]) = (x, y, z);
+            return self.run(&mut r);
+        }
         self.eval(&[x, y, z])
     }
 
-    fn run<const N: usize>(&self, r: &mut [f64; N], args: &[f64]) -> f64 {
-        let at = |i: u8| usize::from(i) & (N - 1);
+    /// A cleared register file with the parameters in its first registers.
+    fn registers_with<const N: usize>(&self, args: &[f64]) -> [f64; N] {
+        let mut r = [0.0; N];
         for (slot, arg) in r.iter_mut().zip(args).take(self.params) {
             *slot = *arg;
         }
+        r
+    }
+
+    /// Runs the code on registers holding the parameters.
+    fn run<const N: usize>(&self, r: &mut [f64; N]) -> f64 {
+        let at = |i: u8| usize::from(i) & (N - 1);
         for inst in &self.code {
             match *inst {
                 Inst::Const(o, v) => r[at(o)] = v,
@@ -724,6 +764,15 @@ impl Program {
                 Inst::MulMulAdd(o, [a, b, c, d]) => {
                     r[at(o)] = r[at(a)] * r[at(b)] + r[at(c)] * r[at(d)]
                 }
+                Inst::SumOfSquares(o, [a, b, c]) => {
+                    let (a, b, c) = (r[at(a)], r[at(b)], r[at(c)]);
+                    r[at(o)] = a * a + (b * b + c * c)
+                }
+                Inst::SumDifference([s, d], [a, b]) => {
+                    let (a, b) = (r[at(a)], r[at(b)]);
+                    r[at(s)] = a + b;
+                    r[at(d)] = a - b;
+                }
                 Inst::Dot3(o, [a, b, c, d, e, f]) => {
                     r[at(o)] = r[at(a)] * r[at(b)] + (r[at(c)] * r[at(d)] + r[at(e)] * r[at(f)])
                 }
@@ -732,6 +781,10 @@ impl Program {
                 Inst::AddMulK(o, [a, b], k) => r[at(o)] = (r[at(a)] + r[at(b)]) * k,
                 Inst::MulKAddK(o, a, [k1, k2]) => r[at(o)] = r[at(a)] * k1 + k2,
                 Inst::SqrtMulAddK(o, [a, b], k) => r[at(o)] = (r[at(a)] * r[at(b)] + k).sqrt(),
+                Inst::SqrtSquareAddK(o, a, k) => {
+                    let a = r[at(a)];
+                    r[at(o)] = (a * a + k).sqrt()
+                }
                 Inst::AbsSub(o, [a, b]) => r[at(o)] = r[at(a)].abs() - r[at(b)],
                 Inst::AddK(o, a, k) => r[at(o)] = r[at(a)] + k,
                 Inst::MulK(o, a, k) => r[at(o)] = r[at(a)] * k,
@@ -1046,6 +1099,37 @@ fn trig_pairs(nodes: &[Node], live: &[bool]) -> Vec<(usize, usize)> {
         .collect()
 }
 
+/// The live sums and differences of the same two values, as (sum, difference) pairs of
+/// node indices: each pair is one instruction.
+fn sum_difference_pairs(nodes: &[Node], live: &[bool]) -> Vec<(usize, usize)> {
+    // By operands (a sum's in either order): the first sum and difference.
+    let mut found: HashMap<(u32, u32), (Option<usize>, Option<usize>)> = HashMap::new();
+    for (i, node) in nodes.iter().enumerate() {
+        match *node {
+            _ if !live[i] => continue,
+            Node::Binary(Binary::Add, a, b) => {
+                found.entry((a, b)).or_default().0.get_or_insert(i);
+                found.entry((b, a)).or_default().0.get_or_insert(i);
+            }
+            Node::Binary(Binary::Sub, a, b) => {
+                found.entry((a, b)).or_default().1.get_or_insert(i);
+            }
+            _ => {}
+        }
+    }
+    let mut pairs: Vec<(usize, usize)> = found
+        .into_values()
+        .filter_map(|pair| match pair {
+            (Some(sum), Some(difference)) => Some((sum, difference)),
+            _ => None,
+        })
+        .collect();
+    // A sum of a and b is listed under (a, b) and (b, a): it pairs with one difference.
+    pairs.sort_unstable();
+    pairs.dedup_by_key(|pair| pair.0);
+    pairs
+}
+
 /// 1/k when it is exact (k a power of two), so that a division by k can be a product.
 fn exact_reciprocal(k: f64) -> Option<f64> {
     const MANTISSA: u64 = (1 << 52) - 1;
@@ -1219,7 +1303,8 @@ mod tests {
             assert!((want - got).abs() < 1e-12, "{p:?}: {want} {got}");
         }
         assert_count(&program, |i| matches!(i, Inst::SinCosK(..)), 3);
-        assert_count(&program, |i| matches!(i, Inst::Dot3(..)), 2);
+        assert_count(&program, |i| matches!(i, Inst::Dot3(..)), 1);
+        assert_count(&program, |i| matches!(i, Inst::SumOfSquares(..)), 1);
         assert_count(&program, |_| true, 6);
     }
 
@@ -1273,7 +1358,8 @@ mod tests {
 
     #[test]
     fn scaled_offsets_roots_of_products_and_absolute_differences_are_one_instruction() {
-        // a = |x| - (y·0.32/16 + 0.15), b = z; (a + b + √((a - b)·(a - b) + 0.0625)) / 2
+        // a = |x| - (y·0.32/16 + 0.15), b = z; (a + b + √((a - b)·(a - b) + 0.0625)) / 2,
+        // where a + b and a - b are one instruction too.
         let f = code(
             &["x", "y", "z"],
             vec![
@@ -1317,13 +1403,41 @@ mod tests {
         }
         assert_count(&program, |i| matches!(i, Inst::MulKAddK(..)), 1);
         assert_count(&program, |i| matches!(i, Inst::AbsSub(..)), 1);
-        assert_count(&program, |i| matches!(i, Inst::SqrtMulAddK(..)), 1);
+        assert_count(&program, |i| matches!(i, Inst::SqrtSquareAddK(..)), 1);
+        assert_count(&program, |i| matches!(i, Inst::SumDifference(..)), 1);
         assert_count(
             &program,
             |i| matches!(i, Inst::AddMulK(_, _, k) if *k == 0.5),
             1,
         );
-        assert_count(&program, |_| true, 6);
+        assert_count(&program, |_| true, 5);
+    }
+
+    #[test]
+    fn a_sum_pairs_with_one_difference_of_its_operands() {
+        // (y + x)·(x - y) + (y - x): the sum commutes, so either difference could pair.
+        let f = code(
+            &["x", "y"],
+            vec![
+                Op::Param(1),
+                Op::Param(0),
+                Op::Add,
+                Op::Param(0),
+                Op::Param(1),
+                Op::Sub,
+                Op::Mul,
+                Op::Param(1),
+                Op::Param(0),
+                Op::Sub,
+                Op::Add,
+            ],
+        );
+        let program = Program::compile(&f, 2).unwrap();
+        for p in [[0.3, -1.2], [10.0, 0.1], [-7.5, 3.3]] {
+            assert_eq!(program.eval(&p).to_bits(), f.eval(&p).to_bits(), "{p:?}");
+        }
+        assert_count(&program, |i| matches!(i, Inst::SumDifference(..)), 1);
+        assert_count(&program, |i| matches!(i, Inst::Sub(..)), 1);
     }
 
     #[test]
