@@ -176,7 +176,10 @@ pub fn quartic_roots_in(coeffs: &[f64; 5], lo: f64, hi: f64) -> ([f64; 4], usize
 
 /// The real roots of the cubic `coeffs` (lowest degree first) in `[lo, hi]`, ascending:
 /// the closed form, each root polished by two Newton steps on the cubic itself. A
-/// vanishing leading coefficient falls back to the general search.
+/// vanishing leading coefficient falls back to the general search. Inlined, so that the
+/// roots stay in locals instead of going through memory, as returned arrays do in
+/// WebAssembly.
+#[inline(always)]
 pub fn cubic_roots_in(coeffs: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3], usize) {
     let mut found = ([0.0; 3], 0);
     let lead = coeffs[3];

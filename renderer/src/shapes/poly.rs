@@ -200,7 +200,9 @@ fn powers(x: f64, n: usize) -> [f64; MAX_DEGREE + 1] {
 
 /// The interval of t in which a polynomial shape's roots are looked for (inside the
 /// `region` if it has one, else within [`MAX_DISTANCE`] of the ray's nearest approach to
-/// the origin), and the t around which its polynomial along the ray is built.
+/// the origin), and the t around which its polynomial along the ray is built. Inlined, as
+/// the span returned through memory costs about as much as finding it.
+#[inline(always)]
 pub(super) fn search_span(region: Option<&Aabb>, ray: &Ray) -> Option<(f64, f64, f64)> {
     match region {
         Some(region) => {
