@@ -58,6 +58,17 @@ impl Aabb {
         (self.min + self.max) * 0.5
     }
 
+    /// The eight corners of a finite box.
+    pub fn corners(&self) -> [DVec3; 8] {
+        std::array::from_fn(|i| {
+            DVec3::new(
+                if i & 1 == 0 { self.min.x } else { self.max.x },
+                if i & 2 == 0 { self.min.y } else { self.max.y },
+                if i & 4 == 0 { self.min.z } else { self.max.z },
+            )
+        })
+    }
+
     /// The box around this box after an affine map. Infinite extents stay infinite along
     /// every axis they can reach.
     pub fn transformed(&self, m: &DAffine3) -> Aabb {
@@ -68,12 +79,7 @@ impl Aabb {
             return self.transformed_unbounded(m);
         }
         let mut out = Aabb::EMPTY;
-        for i in 0..8 {
-            let corner = DVec3::new(
-                if i & 1 == 0 { self.min.x } else { self.max.x },
-                if i & 2 == 0 { self.min.y } else { self.max.y },
-                if i & 4 == 0 { self.min.z } else { self.max.z },
-            );
+        for corner in self.corners() {
             let p = m.transform_point3(corner);
             out.min = out.min.min(p);
             out.max = out.max.max(p);

@@ -785,6 +785,12 @@ fn axis_frame(base: DVec3, cap: DVec3, radius: f64) -> Option<DAffine3> {
 /// The world of a `#version 3.7` scene written in SDL, at quality 9, for tests.
 #[cfg(test)]
 pub(crate) fn world_of_source(text: &str) -> World {
+    scene_and_world_of_source(text).1
+}
+
+/// [`world_of_source`] with the scene it is built from.
+#[cfg(test)]
+pub(crate) fn scene_and_world_of_source(text: &str) -> (Scene, World) {
     use analysis::{EvalOptions, MemoryFiles, evaluate};
     let files = MemoryFiles::new().with("scene.pov", format!("#version 3.7;\n{text}"));
     let scene = evaluate("scene.pov", &files, &EvalOptions::default())
@@ -795,7 +801,8 @@ pub(crate) fn world_of_source(text: &str) -> World {
         output_alpha: false,
         max_trace_level: None,
     };
-    build_world(&scene, settings).expect("the world builds")
+    let world = build_world(&scene, settings).expect("the world builds");
+    (scene, world)
 }
 
 #[cfg(test)]

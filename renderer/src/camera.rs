@@ -61,6 +61,18 @@ impl Camera {
         Ok(c)
     }
 
+    /// For a perspective camera, the point every ray starts from and the matrix whose
+    /// columns are `right`, `up` and `direction`: a ray's direction is `direction` plus the
+    /// image position's shares of the other two. `None` for the other projections.
+    pub fn eye(&self) -> Option<(DVec3, DMat3)> {
+        (self.kind == CameraKind::Perspective).then(|| {
+            (
+                self.location,
+                DMat3::from_cols(self.right, self.up, self.direction),
+            )
+        })
+    }
+
     /// The ray through image position `(x, y)`, in pixels from the top-left corner of the
     /// image (pixel centres at half-integers). `None` where the projection has no ray.
     pub fn ray(&self, x: f64, y: f64, width: f64, height: f64) -> Option<Ray> {

@@ -154,6 +154,18 @@ impl Leaf {
         self.shape.inside(self.local_point(p)) != self.inverse
     }
 
+    /// The corners of the shape's own box carried into the world, when the leaf has a
+    /// frame of its own and the box is finite: a box holding the surface that may be far
+    /// tighter than its world box (a tilted ring's is a flat slab).
+    pub fn frame_corners(&self) -> Option<[DVec3; 8]> {
+        let to_world = self.to_local?.inverse();
+        let local = self.shape.bounds();
+        if local.is_empty() || !local.is_finite() || !to_world.is_finite() {
+            return None;
+        }
+        Some(local.corners().map(|c| to_world.transform_point3(c)))
+    }
+
     /// Gives a mesh's triangles the materials of its texture list.
     pub fn set_face_materials(&mut self, materials: Vec<Arc<Material>>) {
         self.transmits |= materials.iter().any(|m| m.transmits);

@@ -39,6 +39,7 @@ pub fn render_with_warnings(
         message,
         origin: scene.camera.origin.clone(),
     })?;
+    world.bvh.view_from(camera.eye());
     let (width, height) = (options.width.max(1), options.height.max(1));
     let region = Region::from_options(options, width, height);
     let frame = radiosity::Frame {

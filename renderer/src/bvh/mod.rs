@@ -3,11 +3,14 @@
 //! tested for every ray.
 
 pub mod tree;
+pub mod vista;
 
 use crate::bounds::Aabb;
 use crate::object::{Hit, Object, Query};
 use crate::ray::RayKind;
+use glam::{DMat3, DVec3};
 use tree::Tree;
+use vista::Vista;
 
 /// Objects in one leaf of the tree at most: an object's own test costs about what a box
 /// test does, so small leaves pay.
@@ -22,6 +25,9 @@ pub struct Bvh {
     /// The kinds of rays that may meet some object (a set of
     /// [`RayKind::bit`](crate::ray::RayKind::bit)s).
     kinds: u8,
+    /// The objects each ray from a perspective camera's eye may meet, when the camera is
+    /// known (see [`Bvh::view_from`]).
+    vista: Option<Vista>,
 }
 
 impl Bvh {
@@ -47,7 +53,15 @@ impl Bvh {
             objects,
             unbounded,
             kinds,
+            vista: None,
         }
+    }
+
+    /// Lists the objects rays from a perspective camera's `eye` may meet, by direction
+    /// (`frame`'s columns: the camera's right, up and direction), for the camera rays'
+    /// searches; `None` for another camera.
+    pub fn view_from(&mut self, eye: Option<(DVec3, DMat3)>) {
+        self.vista = eye.and_then(|(eye, frame)| Vista::build(&self.objects, eye, frame));
     }
 
     /// Whether rays of `kind` may meet some object: shadow rays meet none in a scene
@@ -83,7 +97,41 @@ impl Bvh {
 
     /// The nearest crossing of any object inside the query's interval.
     pub fn nearest<'a>(&'a self, q: &Query, scratch: &mut Vec<Hit<'a>>) -> Option<Hit<'a>> {
+        if q.kind == RayKind::Primary
+            && q.tmin >= 0.0
+            && let Some(vista) = &self.vista
+            && let Some(cell) = vista.cell(&q.ray)
+        {
+            return self.nearest_listed(q, scratch, &cell);
+        }
         self.search(q, scratch, false)
+    }
+
+    /// [`Bvh::nearest`] for a ray from the camera's eye, among the unbounded objects and
+    /// those its cell of the vista lists, nearest first, until the next lies beyond the
+    /// nearest crossing found.
+    fn nearest_listed<'a>(
+        &'a self,
+        q: &Query,
+        scratch: &mut Vec<Hit<'a>>,
+        cell: &vista::Cell<'_>,
+    ) -> Option<Hit<'a>> {
+        let mut q = *q;
+        let mut best = None;
+        for object in &self.unbounded {
+            if let Some(hit) = object.nearest(&q, scratch) {
+                take(&mut best, hit, &mut q, false);
+            }
+        }
+        for entry in cell.entries {
+            if entry.depth >= q.tmax * cell.depth_per_t {
+                break;
+            }
+            if let Some(hit) = self.objects[entry.index as usize].nearest(&q, scratch) {
+                take(&mut best, hit, &mut q, false);
+            }
+        }
+        best
     }
 
     /// What a shadow ray meets inside the query's interval: a crossing of an opaque leaf

@@ -1,0 +1,245 @@
+//! The objects a ray from a perspective camera's eye may meet, by where the ray crosses the
+//! image: each bounded object's box, seen from the eye, covers a rectangle of the image,
+//! and a grid of cells over the image lists the objects whose rectangles reach each cell,
+//! nearest first. A camera ray then tests its cell's few objects instead of walking the
+//! hierarchy, whose boxes overlap heavily in scenes of a few large, tilted objects (the
+//! rings of hopf.pov). POV-Ray kept such a "vista buffer" for the same reason.
+//!
+//! The lists hold for any ray from the eye, whatever traced it: a point `p` is seen along
+//! the direction `d` when `p - eye = t d`, so in the camera's frame (`right`, `up`,
+//! `direction`) both have the same image position, and `p`'s depth there bounds `t` from
+//! below. Objects partly behind the eye are listed everywhere; those wholly behind it,
+//! which no ray from the eye meets forwards, nowhere.
+
+use crate::bounds::Aabb;
+use crate::object::Object;
+use crate::ray::{Ray, RayKind};
+use glam::{DMat3, DVec3};
+
+/// Cells along each side of the image.
+const CELLS: usize = 48;
+
+/// The most entries the lists may hold together; beyond it (thousands of objects, or
+/// many covering the whole image) the hierarchy serves camera rays instead.
+const MAX_ENTRIES: usize = 1 << 18;
+
+/// The most objects worth listing: many small objects are what the hierarchy is for.
+const MAX_OBJECTS: usize = 4096;
+
+/// A slack on image positions and depths, far beyond rounding, so that an object is
+/// listed in every cell a ray meeting it may fall into.
+const SLACK: f64 = 1e-9;
+
+/// One listed object: its index among the hierarchy's objects and a lower bound of its
+/// depth in the camera's frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Entry {
+    pub depth: f64,
+    pub index: u32,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Vista {
+    eye: DVec3,
+    /// World vectors to the camera's frame: image position across, up, and depth.
+    to_frame: DMat3,
+    /// Where each cell's entries start in `entries`, row by row; one more at the end.
+    starts: Vec<u32>,
+    entries: Vec<Entry>,
+}
+
+/// The cell a ray falls into, and the depth share of its direction, which turns a depth
+/// into a ray parameter.
+pub struct Cell<'v> {
+    pub entries: &'v [Entry],
+    pub depth_per_t: f64,
+}
+
+impl Vista {
+    /// The lists for `objects` seen from `eye`, whose rays leave along `frame`'s
+    /// `direction` column plus shares of its `right` and `up` columns; `None` when the
+    /// frame is degenerate or the lists would grow too long.
+    pub fn build(objects: &[Object], eye: DVec3, frame: DMat3) -> Option<Vista> {
+        if objects.is_empty() || objects.len() > MAX_OBJECTS || frame.determinant() == 0.0 {
+            return None;
+        }
+        let to_frame = frame.inverse();
+        if !to_frame.is_finite() {
+            return None;
+        }
+        let mut per_cell: Vec<Vec<Entry>> = vec![Vec::new(); CELLS * CELLS];
+        let mut total = 0;
+        for (index, object) in objects.iter().enumerate() {
+            if object.kinds() & RayKind::Primary.bit() == 0 {
+                continue;
+            }
+            let Some(seen) = seen_from(object, eye, to_frame) else {
+                continue;
+            };
+            let (x0, x1) = cell_range(seen.min.x, seen.max.x);
+            let (y0, y1) = cell_range(seen.min.y, seen.max.y);
+            let entry = Entry {
+                depth: seen.min.z,
+                index: index as u32,
+            };
+            for y in y0..y1 {
+                for x in x0..x1 {
+                    per_cell[y * CELLS + x].push(entry);
+                }
+            }
+            total += x1.saturating_sub(x0) * y1.saturating_sub(y0);
+            if total > MAX_ENTRIES {
+                return None;
+            }
+        }
+        let mut starts = Vec::with_capacity(per_cell.len() + 1);
+        let mut entries = Vec::with_capacity(total);
+        for mut list in per_cell {
+            starts.push(entries.len() as u32);
+            // Nearest first, ties in the objects' order: a ray stops at the first object
+            // deeper than its nearest crossing so far.
+            list.sort_by(|a, b| a.depth.total_cmp(&b.depth).then(a.index.cmp(&b.index)));
+            entries.extend(list);
+        }
+        starts.push(entries.len() as u32);
+        Some(Vista {
+            eye,
+            to_frame,
+            starts,
+            entries,
+        })
+    }
+
+    /// The cell of a ray from the eye forwards into the image, whose objects are the only
+    /// ones it may meet at a positive parameter; `None` for any other ray.
+    #[inline]
+    pub fn cell(&self, ray: &Ray) -> Option<Cell<'_>> {
+        if ray.origin != self.eye {
+            return None;
+        }
+        let v = self.to_frame * ray.direction;
+        if v.z.is_nan() || v.z <= 0.0 {
+            return None;
+        }
+        let x = (v.x / v.z + 0.5) * CELLS as f64;
+        let y = (v.y / v.z + 0.5) * CELLS as f64;
+        // Also false for NaN.
+        if !(x >= 0.0 && x < CELLS as f64 && y >= 0.0 && y < CELLS as f64) {
+            return None;
+        }
+        let cell = y as usize * CELLS + x as usize;
+        let (start, end) = (self.starts[cell] as usize, self.starts[cell + 1] as usize);
+        Some(Cell {
+            entries: &self.entries[start..end],
+            depth_per_t: v.z,
+        })
+    }
+}
+
+/// The box in the camera's frame, from the eye, of the image positions (x, y) and the
+/// depths (z) of `object`'s points: the whole image at depth -∞ for an object reaching
+/// behind the eye, `None` for one wholly behind it.
+fn seen_from(object: &Object, eye: DVec3, to_frame: DMat3) -> Option<Aabb> {
+    let bounds = object.bounds();
+    let mut seen = project(&bounds.corners(), eye, to_frame)?;
+    // A leaf's own box, tilted with it, may cover less of the image; the object lies in
+    // both, and so does its image.
+    if let Object::Leaf(leaf) = object
+        && let Some(corners) = leaf.frame_corners()
+    {
+        let tilted = project(&corners, eye, to_frame)?;
+        seen = seen.intersection(&tilted);
+        if seen.is_empty() {
+            return None;
+        }
+    }
+    Some(seen)
+}
+
+/// The box around the image positions and depths of a convex hull's corners.
+fn project(corners: &[DVec3; 8], eye: DVec3, to_frame: DMat3) -> Option<Aabb> {
+    let everywhere = Aabb::new(
+        DVec3::new(-1.0, -1.0, f64::NEG_INFINITY),
+        DVec3::new(1.0, 1.0, f64::INFINITY),
+    );
+    let frame: [DVec3; 8] = corners.map(|c| to_frame * (c - eye));
+    if frame.iter().all(|v| v.z <= 0.0) {
+        return None;
+    }
+    let mut seen = Aabb::EMPTY;
+    for v in frame {
+        // A corner at or behind the eye's plane, or so near it that its image position
+        // is unreliable, leaves the hull's image unbounded.
+        if !v.is_finite() || v.z <= SLACK * v.length() {
+            return Some(everywhere);
+        }
+        let p = DVec3::new(v.x / v.z, v.y / v.z, v.z);
+        seen.min = seen.min.min(p);
+        seen.max = seen.max.max(p);
+    }
+    let pad = DVec3::new(
+        SLACK * (1.0 + seen.min.x.abs().max(seen.max.x.abs())),
+        SLACK * (1.0 + seen.min.y.abs().max(seen.max.y.abs())),
+        SLACK * seen.min.z,
+    );
+    Some(Aabb {
+        min: seen.min - pad,
+        max: DVec3::new(seen.max.x + pad.x, seen.max.y + pad.y, seen.max.z),
+    })
+}
+
+/// The cells `[first, end)` along one side that image positions from `lo` to `hi` reach.
+fn cell_range(lo: f64, hi: f64) -> (usize, usize) {
+    let n = CELLS as f64;
+    let first = ((lo + 0.5) * n).floor().clamp(0.0, n);
+    let end = ((hi + 0.5) * n).floor().clamp(-1.0, n - 1.0) + 1.0;
+    (first as usize, end.max(first) as usize)
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::build::scene_and_world_of_source;
+    use crate::camera::Camera;
+    use crate::object::Query;
+    use crate::ray::RayKind;
+
+    /// Every camera ray of a scene meets the same crossing with the vista as through the
+    /// hierarchy alone: tilted rings, a box reaching behind the eye, one wholly behind it,
+    /// a hidden one and a plane.
+    #[test]
+    fn camera_rays_meet_what_the_hierarchy_finds() {
+        let (scene, mut world) = scene_and_world_of_source(
+            "camera { location <0, 1, -6> look_at <0, 0, 0> right -1.333*x angle 50 }
+            torus { 1.5, 0.1 rotate <40, 20, 10> translate <-1, 0, 0> }
+            torus { 1.2, 0.2 matrix <0.6,0.8,0, -0.8,0.6,0, 0,0,1, 0.5,0.2,1> }
+            sphere { <1, 0.5, 0>, 0.7 }
+            sphere { <0, 0, -10>, 1 }
+            sphere { <0.2, 0.1, 2>, 0.3 no_image }
+            box { <-3, -0.5, -8>, <-2, 0, 3> }
+            union { sphere { <2, -1, 3>, 0.5 } cylinder { <2, -1, 3>, <3, 0, 4>, 0.2 } }
+            plane { y, -1 }",
+        );
+        let camera = Camera::from_scene(&scene.camera).unwrap();
+        let plain = world.bvh.clone();
+        world.bvh.view_from(camera.eye());
+        assert!(world.bvh.vista.is_some());
+        let (width, height) = (97.0, 61.0);
+        let mut scratch = Vec::new();
+        let mut hits = 0;
+        for y in 0..=61 {
+            for x in 0..=97 {
+                let ray = camera.ray(x as f64, y as f64, width, height).unwrap();
+                let q = Query::new(ray, RayKind::Primary, 1e-9, f64::INFINITY);
+                let listed = world.bvh.nearest(&q, &mut scratch);
+                let walked = plain.nearest(&q, &mut scratch);
+                assert_eq!(
+                    listed.map(|h| (h.t, h.leaf.bounds, h.part)),
+                    walked.map(|h| (h.t, h.leaf.bounds, h.part)),
+                    "pixel ({x}, {y})"
+                );
+                hits += usize::from(walked.is_some());
+            }
+        }
+        assert!(hits > 1000, "the scene is in view");
+    }
+}
