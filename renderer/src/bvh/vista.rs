@@ -12,12 +12,13 @@
 //! which no ray from the eye meets forwards, nowhere.
 
 use crate::bounds::Aabb;
+use crate::fast_math;
 use crate::object::Object;
 use crate::ray::{Ray, RayKind};
-use glam::{DMat3, DVec3};
+use glam::{DMat3, DVec2, DVec3};
 
 /// Cells along each side of the image.
-const CELLS: usize = 48;
+const CELLS: usize = 96;
 
 /// The most entries the lists may hold together; beyond it (thousands of objects, or
 /// many covering the whole image) the hierarchy serves camera rays instead.
@@ -67,41 +68,51 @@ impl Vista {
         if !to_frame.is_finite() {
             return None;
         }
-        let mut per_cell: Vec<Vec<Entry>> = vec![Vec::new(); CELLS * CELLS];
-        let mut total = 0;
-        for (index, object) in objects.iter().enumerate() {
-            if object.kinds() & RayKind::Primary.bit() == 0 {
-                continue;
-            }
-            let Some(seen) = seen_from(object, eye, to_frame) else {
-                continue;
-            };
-            let (x0, x1) = cell_range(seen.min.x, seen.max.x);
-            let (y0, y1) = cell_range(seen.min.y, seen.max.y);
+        // Objects nearest first, ties in their order: each cell's list keeps this order,
+        // so that a ray stops at the first object deeper than its nearest crossing so far.
+        let mut seen: Vec<(u32, Seen)> = objects
+            .iter()
+            .enumerate()
+            .filter(|(_, object)| object.kinds() & RayKind::Primary.bit() != 0)
+            .filter_map(|(index, object)| Some((index as u32, seen_from(object, eye, to_frame)?)))
+            .collect();
+        seen.sort_by(|(i, a), (j, b)| a.rect.min.z.total_cmp(&b.rect.min.z).then(i.cmp(j)));
+        // Each cell's entries, counted and then placed.
+        let mut listed: Vec<(u32, Entry)> = Vec::new();
+        for (index, seen) in &seen {
+            let (x0, x1) = cell_range(seen.rect.min.x, seen.rect.max.x);
+            let (y0, y1) = cell_range(seen.rect.min.y, seen.rect.max.y);
             let entry = Entry {
-                depth: seen.min.z,
-                index: index as u32,
+                depth: seen.rect.min.z,
+                index: *index,
             };
             for y in y0..y1 {
-                for x in x0..x1 {
-                    per_cell[y * CELLS + x].push(entry);
-                }
+                let (x0, x1) = seen.row(y, (x0, x1));
+                listed.extend((x0..x1).map(|x| ((y * CELLS + x) as u32, entry)));
             }
-            total += x1.saturating_sub(x0) * y1.saturating_sub(y0);
-            if total > MAX_ENTRIES {
+            if listed.len() > MAX_ENTRIES {
                 return None;
             }
         }
-        let mut starts = Vec::with_capacity(per_cell.len() + 1);
-        let mut entries = Vec::with_capacity(total);
-        for mut list in per_cell {
-            starts.push(entries.len() as u32);
-            // Nearest first, ties in the objects' order: a ray stops at the first object
-            // deeper than its nearest crossing so far.
-            list.sort_by(|a, b| a.depth.total_cmp(&b.depth).then(a.index.cmp(&b.index)));
-            entries.extend(list);
+        let mut starts = vec![0u32; CELLS * CELLS + 1];
+        for &(cell, _) in &listed {
+            starts[cell as usize + 1] += 1;
         }
-        starts.push(entries.len() as u32);
+        for cell in 0..CELLS * CELLS {
+            starts[cell + 1] += starts[cell];
+        }
+        let mut next = starts.clone();
+        let mut entries = vec![
+            Entry {
+                depth: 0.0,
+                index: 0
+            };
+            listed.len()
+        ];
+        for (cell, entry) in listed {
+            entries[next[cell as usize] as usize] = entry;
+            next[cell as usize] += 1;
+        }
         Some(Vista {
             eye,
             to_frame,
@@ -136,28 +147,91 @@ impl Vista {
     }
 }
 
-/// The box in the camera's frame, from the eye, of the image positions (x, y) and the
-/// depths (z) of `object`'s points: the whole image at depth -∞ for an object reaching
-/// behind the eye, `None` for one wholly behind it.
-fn seen_from(object: &Object, eye: DVec3, to_frame: DMat3) -> Option<Aabb> {
-    let bounds = object.bounds();
-    let mut seen = project(&bounds.corners(), eye, to_frame)?;
-    // A leaf's own box, tilted with it, may cover less of the image; the object lies in
-    // both, and so does its image.
-    if let Object::Leaf(leaf) = object
-        && let Some(corners) = leaf.frame_corners()
-    {
-        let tilted = project(&corners, eye, to_frame)?;
-        seen = seen.intersection(&tilted);
-        if seen.is_empty() {
-            return None;
-        }
-    }
-    Some(seen)
+/// Where an object may show in the image: a box of image positions (x, y) and depths (z),
+/// and the convex outlines of its boxes' images, counter-clockwise.
+struct Seen {
+    rect: Aabb,
+    outlines: Vec<Vec<DVec2>>,
 }
 
-/// The box around the image positions and depths of a convex hull's corners.
-fn project(corners: &[DVec3; 8], eye: DVec3, to_frame: DMat3) -> Option<Aabb> {
+impl Seen {
+    /// The cells `[first, end)` of row `y`, among `cells`, that the outlines may reach.
+    fn row(&self, y: usize, cells: (usize, usize)) -> (usize, usize) {
+        let n = CELLS as f64;
+        let (lo, hi) = (y as f64 / n - 0.5, (y + 1) as f64 / n - 0.5);
+        let pad = SLACK * (1.0 + lo.abs().max(hi.abs()));
+        let (lo, hi) = (lo - pad, hi + pad);
+        let (mut first, mut end) = cells;
+        for outline in &self.outlines {
+            // The outline's part in the row's band is convex, and its corners lie on the
+            // outline's sides: its reach across is that of the sides' parts in the band.
+            let (mut left, mut right) = (f64::INFINITY, f64::NEG_INFINITY);
+            for (i, &a) in outline.iter().enumerate() {
+                let b = outline[(i + 1) % outline.len()];
+                let (mut t0, mut t1) = (0.0, 1.0);
+                if a.y == b.y {
+                    if a.y < lo || a.y > hi {
+                        continue;
+                    }
+                } else {
+                    let (ta, tb) = ((lo - a.y) / (b.y - a.y), (hi - a.y) / (b.y - a.y));
+                    t0 = fast_math::max(t0, fast_math::min(ta, tb));
+                    t1 = fast_math::min(t1, fast_math::max(ta, tb));
+                    if t0 > t1 {
+                        continue;
+                    }
+                }
+                for t in [t0, t1] {
+                    let x = a.x + (b.x - a.x) * t;
+                    left = fast_math::min(left, x);
+                    right = fast_math::max(right, x);
+                }
+            }
+            if left > right {
+                return (0, 0);
+            }
+            let pad = SLACK * (1.0 + left.abs().max(right.abs()));
+            let (x0, x1) = cell_range(left - pad, right + pad);
+            first = first.max(x0);
+            end = end.min(x1);
+        }
+        (first, end.max(first))
+    }
+}
+
+/// Where `object` may show from the eye: the whole image at depth -∞ for an object
+/// reaching behind the eye, `None` for one wholly behind it.
+fn seen_from(object: &Object, eye: DVec3, to_frame: DMat3) -> Option<Seen> {
+    // A leaf's own box, tilted with it, may cover less of the image than its world box;
+    // the object lies in both, and so does its image.
+    let tilted = match object {
+        Object::Leaf(leaf) => leaf.frame_corners(),
+        Object::Csg(_) => None,
+    };
+    let mut seen = Seen {
+        rect: Aabb::INFINITE,
+        outlines: Vec::new(),
+    };
+    for corners in [Some(object.bounds().corners()), tilted]
+        .into_iter()
+        .flatten()
+    {
+        let (rect, points) = project(&corners, eye, to_frame)?;
+        seen.rect = seen.rect.intersection(&rect);
+        if let Some(points) = points {
+            seen.outlines.push(convex_hull(&points));
+        }
+    }
+    (!seen.rect.is_empty()).then_some(seen)
+}
+
+/// The box around the image positions and depths of a box's corners, and the positions
+/// themselves; none when the box reaches behind the eye.
+fn project(
+    corners: &[DVec3; 8],
+    eye: DVec3,
+    to_frame: DMat3,
+) -> Option<(Aabb, Option<[DVec2; 8]>)> {
     let everywhere = Aabb::new(
         DVec3::new(-1.0, -1.0, f64::NEG_INFINITY),
         DVec3::new(1.0, 1.0, f64::INFINITY),
@@ -166,14 +240,18 @@ fn project(corners: &[DVec3; 8], eye: DVec3, to_frame: DMat3) -> Option<Aabb> {
     if frame.iter().all(|v| v.z <= 0.0) {
         return None;
     }
+    // A corner at or behind the eye's plane, or so near it that its image position is
+    // unreliable, leaves the box's image unbounded.
+    if frame
+        .iter()
+        .any(|v| !v.is_finite() || v.z <= SLACK * v.length())
+    {
+        return Some((everywhere, None));
+    }
+    let points = frame.map(|v| DVec2::new(v.x / v.z, v.y / v.z));
     let mut seen = Aabb::EMPTY;
-    for v in frame {
-        // A corner at or behind the eye's plane, or so near it that its image position
-        // is unreliable, leaves the hull's image unbounded.
-        if !v.is_finite() || v.z <= SLACK * v.length() {
-            return Some(everywhere);
-        }
-        let p = DVec3::new(v.x / v.z, v.y / v.z, v.z);
+    for (p, v) in points.iter().zip(&frame) {
+        let p = DVec3::new(p.x, p.y, v.z);
         seen.min = seen.min.min(p);
         seen.max = seen.max.max(p);
     }
@@ -182,10 +260,36 @@ fn project(corners: &[DVec3; 8], eye: DVec3, to_frame: DMat3) -> Option<Aabb> {
         SLACK * (1.0 + seen.min.y.abs().max(seen.max.y.abs())),
         SLACK * seen.min.z,
     );
-    Some(Aabb {
+    let rect = Aabb {
         min: seen.min - pad,
         max: DVec3::new(seen.max.x + pad.x, seen.max.y + pad.y, seen.max.z),
-    })
+    };
+    Some((rect, Some(points)))
+}
+
+/// The convex hull of `points`, counter-clockwise (Andrew's monotone chain).
+fn convex_hull(points: &[DVec2; 8]) -> Vec<DVec2> {
+    let mut sorted = *points;
+    sorted.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    let turn = |o: DVec2, a: DVec2, b: DVec2| (a - o).perp_dot(b - o);
+    // The lower chain left to right, then the upper one right to left.
+    let mut hull: Vec<DVec2> = Vec::with_capacity(16);
+    for pass in [sorted, {
+        sorted.reverse();
+        sorted
+    }] {
+        let floor = hull.len();
+        for p in pass {
+            while hull.len() >= floor + 2
+                && turn(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0
+            {
+                hull.pop();
+            }
+            hull.push(p);
+        }
+        hull.pop();
+    }
+    hull
 }
 
 /// The cells `[first, end)` along one side that image positions from `lo` to `hi` reach.
