@@ -85,6 +85,28 @@ fn value_at(pattern: &scene::Pattern, at: &TexturePoint) -> PatternValue {
 }
 
 impl Surface {
+    /// The colour and finish of a surface of one layer of a solid, opaque colour without
+    /// bumps or reflection: the same at every point, hiding everything behind it and
+    /// sending no further rays, so that the tracer shades it without the layered model's
+    /// bookkeeping.
+    pub fn plain(&self) -> Option<(DVec3, &Finish)> {
+        match self {
+            Surface::Layers(layers) => match layers.as_slice() {
+                [
+                    Layer {
+                        pigment: Pigment::Solid(c),
+                        normal: None,
+                        finish,
+                    },
+                ] if c.filter == 0.0 && c.transmit == 0.0 && finish.reflection.is_none() => {
+                    Some((c.rgb, finish))
+                }
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
     /// Calls `f` with each stack of layers that shows at `at`, its weight, and where the
     /// layers' patterns are evaluated: `at`, or where a texture map's pattern moved it.
     pub fn for_each_layers(

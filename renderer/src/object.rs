@@ -234,6 +234,16 @@ impl Leaf {
         self.material.surface.for_each_layers(at, 1.0, f);
     }
 
+    /// The colour and finish of the leaf's surface when it is plain (see
+    /// [`crate::material::Surface::plain`]).
+    pub fn plain_surface(&self) -> Option<(DVec3, &analysis::scene::Finish)> {
+        if self.face_materials.is_empty() {
+            self.material.surface.plain()
+        } else {
+            None
+        }
+    }
+
     /// The colour light keeps through the surface at the point, averaged over a texture
     /// map's or a triangle's blend.
     pub fn transmitted_at(&self, at: &TexturePoint, part: u32) -> DVec3 {

@@ -202,6 +202,23 @@ impl<'w> Tracer<'w> {
     pub(crate) fn shade(&mut self, ray: &Ray, hit: &Hit<'w>, level: u32, weight: f64) -> Sample {
         let p = ray.at(hit.t);
         let leaf: &'w Leaf = hit.leaf;
+        if self.world.quality.lighting
+            && let Some((colour, finish)) = leaf.plain_surface()
+            && self.shades_plainly()
+        {
+            let mut normal = leaf.normal(p, hit.part);
+            if normal.dot(ray.direction) > 0.0 {
+                normal = -normal;
+            }
+            return self.shade_plain(ray, p, normal, leaf, colour, finish);
+        }
+        self.shade_layered(ray, hit, level, weight)
+    }
+
+    /// [`Self::shade`] by the layered model, whatever the surface.
+    fn shade_layered(&mut self, ray: &Ray, hit: &Hit<'w>, level: u32, weight: f64) -> Sample {
+        let p = ray.at(hit.t);
+        let leaf: &'w Leaf = hit.leaf;
         // A texture map shades each texture it blends and mixes the results.
         let at = leaf.texture_point(p, hit.part, ray);
         let mut total = Sample::default();
@@ -226,6 +243,52 @@ impl<'w> Tracer<'w> {
             total = total + s * w;
         });
         total
+    }
+
+    /// Whether plain surfaces may skip the layered model: without radiosity, photons or
+    /// subsurface light, which need its bookkeeping, and with the bailout letting the top
+    /// layer show and nothing through it.
+    fn shades_plainly(&self) -> bool {
+        let world = self.world;
+        self.radiosity.is_none()
+            && world.photons.is_none()
+            && world.subsurface.is_none()
+            && (0.0..1.0).contains(&world.adc_bailout)
+    }
+
+    /// [`Self::shade_layers`] for a plain surface (see
+    /// [`crate::material::Surface::plain`]), as [`Self::shades_plainly`] allows: its own
+    /// ambient and emitted light and the light sources' — its one opaque layer shows
+    /// nothing beneath or behind it and reflects nothing, so there is nothing to stack,
+    /// filter or trace further.
+    fn shade_plain(
+        &mut self,
+        ray: &Ray,
+        p: DVec3,
+        normal: DVec3,
+        leaf: &'w Leaf,
+        colour: DVec3,
+        finish: &Finish,
+    ) -> Sample {
+        let world = self.world;
+        let ambient = finish.ambient * world.ambient_light;
+        let mut own = colour * (ambient + finish.emission);
+        if shows_light(finish) {
+            let shading = Shading {
+                p,
+                normal,
+                ray,
+                surface: colour,
+                finish,
+                diffuse: finish.diffuse,
+                opacity: 1.0,
+                double_illuminate: leaf.double_illuminate,
+            };
+            for light in world.lights_for(leaf) {
+                own += self.direct_light(light, &shading);
+            }
+        }
+        Sample::new(own, 0.0)
     }
 
     /// One stack of texture layers, top first, as POV-Ray shades them: each layer adds its
@@ -1017,4 +1080,52 @@ pub(crate) fn centre(world: &World, text: &str) -> DVec3 {
     let camera = crate::camera::Camera::from_scene(&scene.camera).unwrap();
     let ray = camera.ray(20.0, 15.0, 40.0, 30.0).unwrap();
     Tracer::new(world).trace_primary(&ray).colour
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::build::scene_and_world_of_source;
+    use crate::camera::Camera;
+
+    /// Plain surfaces shade as the layered model shades them, to the bit, under every
+    /// kind of finish and light the shortcut keeps: highlights, backside and double
+    /// illumination, iridescence, graininess, shadowless, spot and fading lights, shadows.
+    #[test]
+    fn plain_surfaces_shade_as_layers_do() {
+        let (scene, world) = scene_and_world_of_source(
+            "camera { location <0, 2, -6> look_at <0, 0, 0> right -1.333*x }
+            light_source { <4, 6, -6> color rgb 1.2 }
+            light_source { <-3, 2, -4> color rgb <0.3, 0.4, 0.9> shadowless }
+            light_source { <0, 5, 0> color 1 spotlight point_at <0, -1, 0> radius 10 falloff 20
+              fade_distance 3 fade_power 2 }
+            global_settings { ambient_light rgb <0.2, 0.3, 0.1> }
+            sphere { <-1, 0, 0>, 1 pigment { rgb <0.9, 0.4, 0.15> }
+              finish { specular 0.5 roughness 0.02 diffuse 0.7 brilliance 2 } }
+            sphere { <1.2, 0, 0.5>, 0.8 pigment { rgb <0.2, 0.6, 0.9> }
+              finish { phong 0.8 phong_size 30 metallic 0.5 irid { 0.3 thickness 0.2 } emission 0.1 } }
+            box { <-0.5, -1, -2>, <0.5, 0.2, -1.5> pigment { rgb 0.8 }
+              finish { diffuse 0.6, 0.4 crand 0.1 ambient 0.3 } }
+            disc { <0, 0.5, -2.5>, <0.3, 1, -0.2>, 0.5 pigment { rgb <1, 0.5, 0.5> } double_illuminate }
+            plane { y, -1 pigment { rgb <0.92, 0.92, 0.88> } finish { diffuse 0.6 } }",
+        );
+        let camera = Camera::from_scene(&scene.camera).unwrap();
+        let mut tracer = Tracer::new(&world);
+        let mut plain = 0;
+        for y in 0..30 {
+            for x in 0..40 {
+                let ray = camera
+                    .ray(x as f64 + 0.5, y as f64 + 0.5, 40.0, 30.0)
+                    .unwrap();
+                let Some(hit) = tracer.first_hit(&ray, RayKind::Primary) else {
+                    continue;
+                };
+                plain += usize::from(hit.leaf.plain_surface().is_some());
+                let shaded = tracer.shade(&ray, &hit, 1, 1.0);
+                let layered = tracer.shade_layered(&ray, &hit, 1, 1.0);
+                assert_eq!(shaded, layered, "pixel ({x}, {y})");
+            }
+        }
+        assert!(tracer.shades_plainly() && plain > 600, "{plain} plain hits");
+    }
 }
