@@ -14,7 +14,8 @@ pub trait FileSource {
     /// The bytes of `name` (an image, a height field, a font), found by the same rules as
     /// `read`, or `None` when this source does not have it.
     fn read_bytes(&self, name: &str) -> Option<Arc<[u8]>>;
-    /// Every name this source can supply, listed in "missing include" errors.
+    /// Every name this source can supply: "cannot find" errors list those of the missing
+    /// file's kind.
     fn names(&self) -> Vec<String>;
     /// The syntax tree of `name`'s text when this source already holds one (the language
     /// server's database does), so that checking and linting need not parse it again.
@@ -172,13 +173,13 @@ impl FileSource for DirectoryFiles {
     }
 
     fn names(&self) -> Vec<String> {
-        include_files_in(self.paths.iter().map(std::path::PathBuf::as_path))
+        files_in(self.paths.iter().map(std::path::PathBuf::as_path))
     }
 }
 
-/// The `.inc` files directly in `dirs`, sorted and without repeats: what a "missing
-/// include" error lists as available.
-pub fn include_files_in<'a>(dirs: impl IntoIterator<Item = &'a std::path::Path>) -> Vec<String> {
+/// The files directly in `dirs`, sorted and without repeats: what a "cannot find" error
+/// lists as available (those of the missing file's kind).
+pub fn files_in<'a>(dirs: impl IntoIterator<Item = &'a std::path::Path>) -> Vec<String> {
     let mut names: Vec<String> = dirs
         .into_iter()
         .filter_map(|dir| std::fs::read_dir(dir).ok())
@@ -186,7 +187,6 @@ pub fn include_files_in<'a>(dirs: impl IntoIterator<Item = &'a std::path::Path>)
         .filter_map(|entry| entry.ok())
         .filter(|entry| entry.file_type().is_ok_and(|t| t.is_file()))
         .filter_map(|entry| entry.file_name().into_string().ok())
-        .filter(|name| name.ends_with(".inc"))
         .collect();
     names.sort();
     names.dedup();

@@ -64,7 +64,7 @@ impl FileSource for DiskFiles {
     }
 
     fn names(&self) -> Vec<String> {
-        analysis::files::include_files_in(self.search_path.iter().map(PathBuf::as_path))
+        analysis::files::files_in(self.search_path.iter().map(PathBuf::as_path))
     }
 }
 
@@ -95,6 +95,6 @@ mod tests {
         // Tests run in the crate's directory, which has a Cargo.toml; it is not on the path.
         assert!(Path::new("Cargo.toml").exists());
         assert_eq!(files.read("Cargo.toml"), None);
-        assert_eq!(files.names(), ["a.inc", "b.inc"]);
+        assert_eq!(files.names(), ["a.inc", "b.inc", "scene.pov"]);
     }
 }

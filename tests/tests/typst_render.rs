@@ -323,7 +323,7 @@ fn scene_errors_are_the_gcc_style_report() {
         plugin errored with: scene.pov:1:41: error: cannot find image file 'missing.png'
             1 | plane { -z, 0 pigment { image_map { png "missing.png" } } }
               |                                         ^~~~~~~~~~~~~
-        note: files available: data.txt, map.png
+        note: files available: map.png
         --- corrupt image
         plugin errored with: scene.pov:1:41: error: cannot read 'map.png': not a valid PNG file: unexpected end of file
             1 | plane { -z, 0 pigment { image_map { png "map.png" } } }

@@ -164,8 +164,8 @@ impl FileSource for ProjectFiles<'_> {
         Some(crate::db::parse(self.db, file).clone())
     }
 
-    /// The `.inc` files of the scene's directory and the library paths, as the CLI lists
-    /// them in "cannot find include file" errors.
+    /// The files of the scene's directory and the library paths, as the CLI lists them in
+    /// "cannot find" errors.
     fn names(&self) -> Vec<String> {
         let project = self.main.project(self.db);
         project.disk_revision(self.db);
@@ -173,7 +173,7 @@ impl FileSource for ProjectFiles<'_> {
         let Some(dir) = path.search_dir() else {
             return Vec::new();
         };
-        crate::files::include_files_in(
+        crate::files::files_in(
             std::iter::once(dir).chain(project.library_paths(self.db).iter().map(PathBuf::as_path)),
         )
     }

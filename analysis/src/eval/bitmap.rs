@@ -14,6 +14,9 @@ use crate::scene::{BlendMap, Pattern, PatternKind, Texture, Transform};
 use std::sync::Arc;
 use syntax::SyntaxKind::*;
 
+/// How many available files a "cannot find" error names at most.
+const LISTED_FILES: usize = 30;
+
 /// An image file named at the head of an image statement.
 pub(super) struct BitmapFile {
     pub image: Arc<Image>,
@@ -140,19 +143,31 @@ impl Evaluator<'_> {
         Ok(grid)
     }
 
-    /// "cannot find image file 'x'", with the files the source has.
+    /// "cannot find image file 'x'", with the files the source has of the same kind: those
+    /// with the missing name's extension, the first [`LISTED_FILES`] of them.
     pub(super) fn missing_file(
         &self,
         at: &Token,
         name: &str,
         what: &str,
     ) -> Box<syntax::Diagnostic> {
+        let extension = |n: &str| {
+            std::path::Path::new(n)
+                .extension()
+                .map(|e| e.to_string_lossy().to_ascii_lowercase())
+        };
+        let wanted = extension(name);
         let mut available = self.source.names();
-        available.retain(|n| n != &self.files[0].name);
-        let list = if available.is_empty() {
-            "none".to_owned()
-        } else {
-            available.join(", ")
+        available
+            .retain(|n| n != &self.files[0].name && (wanted.is_none() || extension(n) == wanted));
+        let list = match available.len() {
+            0 => "none".to_owned(),
+            n if n > LISTED_FILES => format!(
+                "{} and {} more",
+                available[..LISTED_FILES].join(", "),
+                n - LISTED_FILES
+            ),
+            _ => available.join(", "),
         };
         let mut error = self.error_at(at, format!("cannot find {what} file '{name}'"));
         error.notes.push(format!("files available: {list}"));
@@ -470,8 +485,22 @@ mod tests {
         assert!(!evaluate("scene.pov", &jpeg, &EvalOptions::default()).has_errors());
         assert!(error(&scene("\"map.gif\""), renamed).starts_with("cannot read 'map.gif'"));
         assert_eq!(
-            error(&scene("png \"map.png\" map_type 3"), files),
+            error(&scene("png \"map.png\" map_type 3"), files.clone()),
             "not supported yet: map_type 3 58..59 []"
+        );
+        // The note names the files of the missing one's kind, the first thirty of them.
+        let mut many = files;
+        many.insert_bytes("notes.txt", PIXEL);
+        for i in 10..45 {
+            many.insert_bytes(format!("tile{i}.PNG"), PIXEL);
+        }
+        let listed: Vec<String> = (10..38).map(|i| format!("tile{i}.PNG")).collect();
+        assert_eq!(
+            error(&scene("png \"tile9.png\""), many),
+            format!(
+                "cannot find image file 'tile9.png' 39..50 [\"files available: bad.png, map.png, {} and 7 more\"]",
+                listed.join(", ")
+            )
         );
     }
 
