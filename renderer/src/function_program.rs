@@ -263,6 +263,19 @@ enum Rare {
     },
 }
 
+/// A register file for evaluating programs many times in a row, such as along one ray:
+/// large enough for any program, so that register numbers index it without masks or
+/// bounds checks, and cleared once instead of at every evaluation. What a register held
+/// before does not matter: code writes each register before it reads it.
+#[derive(Debug, Clone)]
+pub struct Registers([f64; 256]);
+
+impl Default for Registers {
+    fn default() -> Self {
+        Registers([0.0; 256])
+    }
+}
+
 /// A compiled float function of `params` parameters.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Program {
@@ -724,6 +737,17 @@ impl Program {
             return self.run(&mut r);
         }
         self.eval(&[x, y, z])
+    }
+
+    /// [`Program::eval3`] in registers that the caller keeps from one evaluation to the next.
+    pub fn eval3_in(&self, registers: &mut Registers, x: f64, y: f64, z: f64) -> f64 {
+        // Parameters past the third would have to be cleared.
+        if self.params > 3 {
+            return self.eval3(x, y, z);
+        }
+        let r = &mut registers.0;
+        (r[0], r[1], r[2]) = (x, y, z);
+        self.run(r)
     }
 
     /// A cleared register file with the parameters in its first registers.

@@ -8,7 +8,7 @@
 
 use super::Roots;
 use crate::fast_math;
-use crate::function_program::Program;
+use crate::function_program::{Program, Registers};
 use crate::ray::Ray;
 use analysis::function::Function;
 use analysis::scene::math_shapes::Container;
@@ -40,6 +40,15 @@ impl FieldFunction {
     pub fn eval(&self, p: DVec3) -> f64 {
         match self {
             FieldFunction::Program(program) => program.eval3(p.x, p.y, p.z),
+            FieldFunction::Function(f) => f.eval(&[p.x, p.y, p.z]),
+        }
+    }
+
+    /// The value at `p`, evaluated in registers the caller keeps.
+    #[inline]
+    fn eval_in(&self, registers: &mut Registers, p: DVec3) -> f64 {
+        match self {
+            FieldFunction::Program(program) => program.eval3_in(registers, p.x, p.y, p.z),
             FieldFunction::Function(f) => f.eval(&[p.x, p.y, p.z]),
         }
     }
@@ -103,11 +112,14 @@ struct Search<'a> {
     speed: f64,
     gradient: f64,
     max_gradient: f64,
+    registers: Registers,
 }
 
 impl Search<'_> {
-    fn value(&self, t: f64) -> f64 {
-        self.side * self.iso.value(self.origin + self.direction * t)
+    fn value(&mut self, t: f64) -> f64 {
+        let p = self.origin + self.direction * t;
+        let f = self.iso.function.eval_in(&mut self.registers, p);
+        self.side * (self.iso.sign * f - self.iso.threshold)
     }
 
     /// POV-Ray's recursive halving over `[t1, t2]` with values `f1`, `f2`; the far end of
@@ -223,6 +235,7 @@ impl Isosurface {
             speed: ray.direction.length(),
             gradient: 0.0,
             max_gradient,
+            registers: Registers::default(),
         };
         if !(search.speed > 0.0 && search.speed.is_finite()) {
             return;
