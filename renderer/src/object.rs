@@ -273,6 +273,20 @@ impl Leaf {
             && self.first_hit(q).is_some()
     }
 
+    /// The nearest crossing inside the query's interval that rays of the query's kind
+    /// see. Inlined, as [`Leaf::first_hit`] is.
+    #[inline(always)]
+    pub fn nearest(&self, q: &Query) -> Option<Hit<'_>> {
+        if !self.visibility.sees(q.kind) {
+            return None;
+        }
+        self.first_hit(q).map(|r| Hit {
+            t: r.t,
+            leaf: self,
+            part: r.part,
+        })
+    }
+
     /// The nearest crossing inside the query's interval. Inlined into the searches, which
     /// call it for every leaf a ray reaches: a call costs the interpreted plugin as much as
     /// a box test.
@@ -572,16 +586,7 @@ impl Object {
             q_clip(csg.bounds, q)?;
         }
         match self {
-            Object::Leaf(leaf) => {
-                if !leaf.visibility.sees(q.kind) {
-                    return None;
-                }
-                leaf.first_hit(q).map(|r| Hit {
-                    t: r.t,
-                    leaf,
-                    part: r.part,
-                })
-            }
+            Object::Leaf(leaf) => leaf.nearest(q),
             Object::Csg(csg) if csg.kind == CsgKind::Union => {
                 let mut q = *q;
                 let mut best = None;

@@ -182,7 +182,8 @@ impl Subdivider {
         self.set(last, 0, *corners[1]);
         self.set(0, last, *corners[2]);
         self.set(last, last, *corners[3]);
-        for (gy, s) in std::mem::take(&mut self.left) {
+        let mut left = std::mem::take(&mut self.left);
+        for &(gy, s) in &left {
             self.set(0, gy, s);
         }
         let mut above = std::mem::take(&mut self.above[col]);
@@ -200,9 +201,10 @@ impl Subdivider {
             sampler.depth.saturating_sub(1),
             scale,
         );
-        self.left = (1..last)
-            .filter_map(|gy| self.traced(last, gy).map(|s| (gy, s)))
-            .collect();
+        // The lists keep their allocations from pixel to pixel.
+        left.clear();
+        left.extend((1..last).filter_map(|gy| self.traced(last, gy).map(|s| (gy, s))));
+        self.left = left;
         above.clear();
         above.extend((1..last).filter_map(|gx| self.traced(gx, last).map(|s| (gx, s))));
         self.above[col] = above;

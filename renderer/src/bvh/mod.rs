@@ -127,7 +127,12 @@ impl Bvh {
             if entry.depth >= q.tmax * cell.depth_per_t {
                 break;
             }
-            if let Some(hit) = self.objects[entry.index as usize].nearest(&q, scratch) {
+            // Leaves, most of the listed objects, are tested here without a call.
+            let hit = match &self.objects[entry.index as usize] {
+                Object::Leaf(leaf) => leaf.nearest(&q),
+                csg => csg.nearest(&q, scratch),
+            };
+            if let Some(hit) = hit {
                 take(&mut best, hit, &mut q, false);
             }
         }
