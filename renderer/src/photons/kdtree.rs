@@ -75,15 +75,31 @@ impl KdTree {
     /// [`Self::nearest`] within `max_d2`; returns the squared distance of the farthest
     /// photon kept when `k` were found.
     fn search(&self, p: Vec3, k: usize, max_d2: f32, found: &mut Vec<Found>) -> f32 {
-        found.clear();
-        if k == 0 {
-            return max_d2;
-        }
-        let mut best = Best {
-            found,
-            k,
-            limit: max_d2,
-        };
+        let mut best = Best::new(found, k, max_d2);
+        self.visit(p, max_d2, |d2, index| {
+            best.offer(d2, index);
+            best.limit
+        });
+        best.limit
+    }
+
+    /// Every photon nearer `p` than the square root of `max_d2`, appended to `out` with
+    /// its index.
+    pub fn within(&self, p: Vec3, max_d2: f32, out: &mut Vec<(Vec3, u32)>) {
+        self.visit(p, max_d2, |d2, index| {
+            if d2 < max_d2 {
+                out.push((self.positions[index as usize], index));
+            }
+            max_d2
+        });
+    }
+
+    /// Hands `offer` the squared distance from `p` and the index of every photon that may
+    /// lie nearer than the limit, the near side of each split first; `offer` returns the
+    /// limit from then on (`limit` at first), which only shrinks.
+    #[inline(always)]
+    fn visit(&self, p: Vec3, limit: f32, mut offer: impl FnMut(f32, u32) -> f32) {
+        let mut limit = limit;
         // Ranges still to visit with the squared distance from `p` to their side of the
         // splitting plane; 64 levels hold any tree that fits in memory.
         let mut stack = [(0u32, 0u32, 0f32); 64];
@@ -92,13 +108,13 @@ impl KdTree {
         while top > 0 {
             top -= 1;
             let (mut lo, mut hi, plane_d2) = stack[top];
-            if plane_d2 >= best.limit {
+            if plane_d2 >= limit {
                 continue;
             }
             while hi - lo > LEAF {
                 let mid = (lo + hi) / 2;
                 let node = self.positions[mid as usize];
-                best.offer(node.distance_squared(p), mid);
+                limit = offer(node.distance_squared(p), mid);
                 let axis = self.axes[mid as usize] as usize;
                 let delta = p[axis] - node[axis];
                 let (near, far) = if delta < 0.0 {
@@ -107,18 +123,34 @@ impl KdTree {
                     ((mid + 1, hi), (lo, mid))
                 };
                 let delta2 = delta * delta;
-                if far.0 < far.1 && delta2 < best.limit && top < stack.len() {
+                if far.0 < far.1 && delta2 < limit && top < stack.len() {
                     stack[top] = (far.0, far.1, delta2);
                     top += 1;
                 }
                 (lo, hi) = near;
             }
             for (index, position) in (lo..hi).zip(&self.positions[lo as usize..hi as usize]) {
-                best.offer(position.distance_squared(p), index);
+                limit = offer(position.distance_squared(p), index);
             }
         }
-        best.limit
     }
+}
+
+/// [`KdTree::nearest`]'s search among `candidates` alone (photons with their indices):
+/// the up to `k` nearest `p` within squared distance `max_d2`, into `found`; returns the
+/// squared distance of the farthest one kept when `k` were found, else `max_d2`.
+pub fn nearest_among(
+    candidates: &[(Vec3, u32)],
+    p: Vec3,
+    k: usize,
+    max_d2: f32,
+    found: &mut Vec<Found>,
+) -> f32 {
+    let mut best = Best::new(found, k, max_d2);
+    for &(position, index) in candidates {
+        best.offer(position.distance_squared(p), index);
+    }
+    best.limit
 }
 
 /// The nearest photons found so far: gathered as they come until there are `k`, then a
@@ -129,12 +161,27 @@ struct Best<'a> {
     limit: f32,
 }
 
-impl Best<'_> {
-    #[inline]
-    fn offer(&mut self, d2: f32, index: u32) {
-        if d2 >= self.limit {
-            return;
+impl<'a> Best<'a> {
+    /// None found yet, within `max_d2`.
+    fn new(found: &'a mut Vec<Found>, k: usize, max_d2: f32) -> Best<'a> {
+        found.clear();
+        Best {
+            found,
+            k,
+            limit: max_d2,
         }
+    }
+
+    /// Keeps the photon if it is nearer than the farthest kept: a comparison, inlined
+    /// into the searches, for the many that are not.
+    #[inline(always)]
+    fn offer(&mut self, d2: f32, index: u32) {
+        if d2 < self.limit {
+            self.keep(d2, index);
+        }
+    }
+
+    fn keep(&mut self, d2: f32, index: u32) {
         let heap = &mut *self.found;
         if heap.len() < self.k {
             heap.push((d2, index));
@@ -146,7 +193,11 @@ impl Best<'_> {
             }
             return;
         }
-        heap[0] = (d2, index);
+        // A selection of no photons has no top and keeps none.
+        let Some(top) = heap.first_mut() else {
+            return;
+        };
+        *top = (d2, index);
         sift_down(heap, 0);
         self.limit = heap[0].0;
     }
