@@ -134,9 +134,17 @@ impl Tree {
         tmin: f64,
         tmax: f64,
         kind: u8,
-        visit: impl FnMut(Range<usize>, f64) -> f64,
+        mut visit: impl FnMut(Range<usize>, f64) -> f64,
     ) {
-        if self.nodes.is_empty() {
+        let Some(root) = self.nodes.first() else {
+            return;
+        };
+        // A tree of one leaf (a scene of a few objects) needs no stack.
+        if root.count > 0 {
+            if root.kinds & kind != 0 && root.bounds.clip(ray, inv_dir, tmin, tmax).is_some() {
+                let start = root.index as usize;
+                visit(start..start + root.count as usize, tmax);
+            }
             return;
         }
         if self.depth + 2 <= SMALL_STACK {
