@@ -83,6 +83,9 @@ pub struct RenderOptions {
     pub clock: Option<f64>,
     /// `Declare=NAME=VALUE`: floats declared before the scene is read.
     pub declared: Vec<(String, f64)>,
+    /// `+WTn` / `Work_Threads=n`: how many threads the CLI renders with. The picture does
+    /// not depend on it; the Typst plugin always has one.
+    pub threads: Option<usize>,
 }
 
 impl Default for RenderOptions {
@@ -115,6 +118,7 @@ impl Default for RenderOptions {
             bits_per_colour: None,
             clock: None,
             declared: Vec::new(),
+            threads: None,
         }
     }
 }
@@ -122,8 +126,8 @@ impl Default for RenderOptions {
 impl RenderOptions {
     /// Applies one POV-Ray option, in the command-line form (`+W640`, `-A`, `+A0.3`,
     /// `+FN16`) or the `.ini` form (`Antialias_Threshold=0.1`). Options that only concern
-    /// POV-Ray's own front end (`+D`, `+V`, `+WT4`, output file names) are accepted and
-    /// have no effect; anything else is an error naming the option.
+    /// POV-Ray's own front end (`+D`, `+V`, output file names) are accepted and have no
+    /// effect; anything else is an error naming the option.
     pub fn apply_povray_option(&mut self, option: &str) -> Result<(), String> {
         let option = option.trim();
         if let Some((key, value)) = option.split_once('=') {
@@ -202,9 +206,14 @@ impl RenderOptions {
                     self.bits_per_colour = Some(if bits > 8 { 16 } else { 8 });
                 }
             }
-            // Display, verbosity, pause, thread count, abort key, output and input names:
-            // the front end's business, not the picture's.
-            "D" | "V" | "P" | "WT" | "X" | "O" | "I" => {}
+            "WT" => {
+                if has_value {
+                    self.threads = Some(parse_range(value, 1, 512)? as usize);
+                }
+            }
+            // Display, verbosity, pause, abort key, output and input names: the front
+            // end's business, not the picture's.
+            "D" | "V" | "P" | "X" | "O" | "I" => {}
             _ => return Err("unknown option".into()),
         }
         Ok(())
@@ -251,9 +260,10 @@ impl RenderOptions {
             }
             "clock" => self.clock = Some(parse_number(value)?),
             "declare" => self.declared.push(parse_declaration(value)?),
-            "display" | "verbose" | "pause_when_done" | "work_threads" | "output_file_name"
-            | "input_file_name" | "output_file_type" | "output_to_file" | "test_abort"
-            | "test_abort_count" | "warning_level" => {}
+            "work_threads" => self.threads = Some(parse_range(value, 1, 512)? as usize),
+            "display" | "verbose" | "pause_when_done" | "output_file_name" | "input_file_name"
+            | "output_file_type" | "output_to_file" | "test_abort" | "test_abort_count"
+            | "warning_level" => {}
             _ => return Err("unknown option".into()),
         }
         Ok(())
@@ -355,6 +365,11 @@ mod tests {
         assert_eq!(o.bits_per_colour, Some(16));
         assert_eq!(o.start_row, Some(Extent::Fraction(0.5)));
         assert_eq!(o.end_column, Some(Extent::Pixel(100)));
+        // The thread count is kept for the front end; a bare `+WT` leaves it alone.
+        assert_eq!(apply(&["+WT3"]).unwrap().threads, Some(3));
+        assert_eq!(apply(&["Work_Threads=2", "+WT"]).unwrap().threads, Some(2));
+        assert_eq!(apply(&["+W10"]).unwrap().threads, None);
+        assert!(apply(&["+WT0"]).is_err());
     }
 
     #[test]

@@ -75,6 +75,21 @@ pub fn run(args: &RenderArgs) -> Outcome {
         eprintln!("povrayst: cannot read {name}: {error}");
         return Outcome::UsageOrIo;
     }
+    // `+WTn` limits the threads; the picture is the same with any number.
+    if let Some(threads) = job.options.threads {
+        match rayon::ThreadPoolBuilder::new().num_threads(threads).build() {
+            Ok(pool) => return pool.install(|| render_job(args, &job, name)),
+            Err(error) => {
+                eprintln!("povrayst: cannot start {threads} threads: {error}");
+                return Outcome::UsageOrIo;
+            }
+        }
+    }
+    render_job(args, &job, name)
+}
+
+/// Renders every frame of `job`, whose scene file is `name`.
+fn render_job(args: &RenderArgs, job: &Job, name: &str) -> Outcome {
     let files = DiskFiles::for_scene(&job.scene, &job.library_paths);
     let mut progress = Progress::new(name, job.frames.len());
     for &frame in &job.frames {
