@@ -117,16 +117,7 @@ impl Evaluator<'_> {
 
     /// `df3 "name"` after `density_file`: the grid, read once however often it is used.
     pub(super) fn density_file(&mut self) -> Result<Arc<DensityGrid>> {
-        let format = self.next()?;
-        if format.kind != DF3_KW {
-            return Err(self.error_at(
-                &format,
-                format!(
-                    "expected df3 after density_file, found {}",
-                    self.describe(&format)
-                ),
-            ));
-        }
+        self.expect(DF3_KW, "df3 after density_file")?;
         let at = self.next()?;
         self.unget(at.clone());
         let name = self.string()?;
