@@ -38,9 +38,13 @@ impl Image {
     /// of each pixel, row by row: what an 8-bit PNG file and the Typst plugin hold.
     pub fn samples8(&self) -> Vec<u8> {
         let channels = if self.has_alpha { 4 } else { 3 };
-        let mut samples = Vec::with_capacity(self.pixels.len() * channels);
-        for pixel in &self.pixels {
-            samples.extend(pixel[..channels].iter().map(|&value| quantise8(value)));
+        // Written into place rather than pushed: a push checks the capacity, which in
+        // WebAssembly costs as much as the quantising.
+        let mut samples = vec![0; self.pixels.len() * channels];
+        for (out, pixel) in samples.chunks_exact_mut(channels).zip(&self.pixels) {
+            for (o, &value) in out.iter_mut().zip(pixel) {
+                *o = quantise8(value);
+            }
         }
         samples
     }

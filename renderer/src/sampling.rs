@@ -284,13 +284,21 @@ impl Subdivider {
 /// by more than the corners' spread (the sum of each channel's range), which most squares
 /// keep below the threshold: those need no comparing of pairs. Rounding keeps the bound,
 /// since each pair's distance is the same sum of differences no larger than the ranges.
+/// The ranges take plain comparisons, a handful of instructions each: a NaN skips them
+/// unless it comes first, and then the spread is NaN and the pairs are compared, in which
+/// a NaN never differs.
 fn differ_at_corners(c: [&Compared; 4], threshold: f64) -> bool {
     let range = |channel: fn(&Sample) -> f64| {
         let first = channel(&c[0].encoded);
         let (mut lo, mut hi) = (first, first);
         for s in &c[1..] {
-            lo = fast_math::min(lo, channel(&s.encoded));
-            hi = fast_math::max(hi, channel(&s.encoded));
+            let v = channel(&s.encoded);
+            if v < lo {
+                lo = v;
+            }
+            if v > hi {
+                hi = v;
+            }
         }
         hi - lo
     };
