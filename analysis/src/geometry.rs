@@ -4,10 +4,11 @@
 //! it to the evaluator; without one, those calls are located errors rather than made-up
 //! answers.
 
-use crate::scene::Object;
+use crate::scene::{Object, Scene};
 use glam::DVec3;
 use std::fmt;
 use std::sync::Arc;
+use syntax::Diagnostic;
 
 /// Answers geometric queries about evaluated objects.
 pub trait Geometry: Send + Sync {
@@ -20,6 +21,13 @@ pub trait Geometry: Send + Sync {
     fn inside_test(&self, object: &Object) -> Result<InsideTest, String>;
     /// The corners of `object`'s bounding box.
     fn extent(&self, object: &Object) -> Result<(DVec3, DVec3), String>;
+    /// What a render of `scene`, evaluated from `main`, would stop on that evaluating it
+    /// does not find (a feature the renderer does not draw yet), so that checking a scene
+    /// reports every error rendering it would. Without a renderer, nothing.
+    fn render_error(&self, main: &str, scene: &Scene) -> Option<Diagnostic> {
+        let _ = (main, scene);
+        None
+    }
 }
 
 /// For front ends without a renderer: every query is refused.

@@ -33,14 +33,22 @@ pub fn check(main: &str, files: &dyn FileSource, options: &EvalOptions) -> Evalu
     evaluate(main, files, options)
 }
 
-/// [`check`] with a renderer answering `trace()`, `inside()` and the extents.
+/// [`check`] with a renderer answering `trace()`, `inside()` and the extents, and telling
+/// what in the scene it would refuse to draw ([`Geometry::render_error`]).
 pub fn check_with(
     main: &str,
     files: &dyn FileSource,
     options: &EvalOptions,
     geometry: &dyn Geometry,
 ) -> Evaluation {
-    evaluate_with(main, files, options, geometry)
+    let mut evaluation = evaluate_with(main, files, options, geometry);
+    if !evaluation.has_errors()
+        && let Some(scene) = &evaluation.scene
+        && let Some(error) = geometry.render_error(main, scene)
+    {
+        evaluation.diagnostics.push(error);
+    }
+    evaluation
 }
 
 /// The syntax errors of one file's text, as diagnostics located in `name`.

@@ -9,7 +9,7 @@ use crate::interior::Interior;
 use crate::light::Light;
 use crate::material::{Material, Surface};
 use crate::object::{Csg, CsgKind, Leaf, Object, Visibility};
-use crate::photons::{PhotonMap, SurfacePhotons, add_targets};
+use crate::photons::{PhotonMap, SurfacePhotons, Target, add_targets};
 use crate::radiosity::Radiosity;
 use crate::shapes::bicubic_patch;
 use crate::shapes::mesh::{Hierarchy, MeshData};
@@ -24,12 +24,24 @@ use analysis::scene::{self, CsgOp, Origin, Scene};
 use glam::{DAffine3, DMat3, DVec3};
 use std::collections::HashMap;
 use std::sync::Arc;
+use syntax::{Diagnostic, TextRange};
 
 /// A scene feature the renderer cannot draw, with where the scene asked for it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BuildError {
     pub message: String,
     pub origin: Origin,
+}
+
+impl BuildError {
+    /// The error as every front end reports it: at its place in the scene, or at the start
+    /// of `main` when it has none (a global setting assembled from several places).
+    pub fn diagnostic(self, main: &str) -> Diagnostic {
+        match self.origin {
+            Some(span) => Diagnostic::error(span.file, span.range, self.message),
+            None => Diagnostic::error(main, TextRange::default(), self.message),
+        }
+    }
 }
 
 /// What the world depends on besides the scene.
@@ -43,6 +55,33 @@ pub struct BuildSettings {
 }
 
 pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, BuildError> {
+    let (mut world, targets) = assemble(scene, settings)?;
+    let photons = scene.settings.photons.as_ref();
+    if let Some(settings) = photons.filter(|_| world.quality.photons) {
+        world.photons = PhotonMap::shoot(&world, settings, &targets)?;
+    }
+    Ok(world)
+}
+
+/// What a render of `scene` at the default quality would stop on before it traces a ray: a
+/// feature not drawn yet, a camera that gives no picture. Its world is built as for a
+/// render, but no photon is shot: `povrayst check`, the language server and the Typst
+/// plugin report these errors with the evaluator's.
+pub fn check_scene(scene: &Scene) -> Result<(), BuildError> {
+    crate::camera::Camera::from_scene(&scene.camera).map_err(|message| BuildError {
+        message,
+        origin: scene.camera.origin.clone(),
+    })?;
+    let settings = BuildSettings {
+        quality: 9,
+        output_alpha: false,
+        max_trace_level: None,
+    };
+    assemble(scene, settings).map(|_| ())
+}
+
+/// The world of `scene` without its photon map, and the photon targets that map needs.
+fn assemble(scene: &Scene, settings: BuildSettings) -> Result<(World, Vec<Target>), BuildError> {
     let mut builder = Builder {
         subsurface_refusal: subsurface_refusal(scene, settings.quality),
         materials: HashMap::new(),
@@ -157,7 +196,7 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
         None => None,
     };
     let light_sets = builder.light_sets();
-    let mut world = World {
+    let world = World {
         bvh,
         lights: builder.lights,
         light_sets,
@@ -183,10 +222,7 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
         photons: None,
         subsurface: subsurface_settings(scene, settings.quality),
     };
-    if let Some(settings) = photons {
-        world.photons = PhotonMap::shoot(&world, settings, &targets)?;
-    }
-    Ok(world)
+    Ok((world, targets))
 }
 
 /// The interiors of the objects around the camera that media rays must start in: those

@@ -9,6 +9,7 @@ use crate::tracer::World;
 use analysis::scene::{Object, Scene};
 use analysis::{InsideTest, Tracer};
 use glam::DVec3;
+use syntax::Diagnostic;
 
 /// The extent POV-Ray gives unbounded objects.
 const HUGE_BOUND: f64 = 1.0e10;
@@ -40,6 +41,12 @@ fn world_of(object: &Object) -> Result<World, String> {
 }
 
 impl analysis::Geometry for SceneGeometry {
+    fn render_error(&self, main: &str, scene: &Scene) -> Option<Diagnostic> {
+        crate::build::check_scene(scene)
+            .err()
+            .map(|error| error.diagnostic(main))
+    }
+
     fn tracer(&self, object: &Object) -> Result<Tracer, String> {
         let world = world_of(object)?;
         Ok(Tracer::new(move |origin, direction| {

@@ -69,7 +69,9 @@ pub fn render_source_with(
     options: &RenderOptions,
     eval_options: &EvalOptions,
 ) -> Result<Rendered, Failure> {
-    let evaluation = analysis::check_with(main, files, eval_options, &crate::SceneGeometry);
+    // Evaluated without the renderer's check: the render that follows builds the world
+    // and stops on the very errors that check reports.
+    let evaluation = analysis::evaluate_with(main, files, eval_options, &crate::SceneGeometry);
     let scene = match evaluation.scene {
         Some(scene) if !evaluation.diagnostics.iter().any(Diagnostic::is_error) => scene,
         _ => {
@@ -96,12 +98,8 @@ pub fn render_source_with(
             })
         }
         Err(error) => {
-            let diagnostic = match error.origin {
-                Some(span) => Diagnostic::error(span.file, span.range, error.message),
-                None => Diagnostic::error(main, TextRange::default(), error.message),
-            };
             let mut diagnostics = evaluation.diagnostics;
-            diagnostics.push(diagnostic);
+            diagnostics.push(error.diagnostic(main));
             Err(Failure {
                 diagnostics,
                 sources: evaluation.sources,

@@ -45,4 +45,10 @@ pub const BROKEN_SCENES: &[BrokenScene] = &[
             "#declare Copper = texture {\n  pigment { color\n  rgb Tint }\n}\n",
         )],
     },
+    BrokenScene {
+        // Evaluates without error: the renderer refuses it when it builds the world.
+        what: "a feature not drawn yet",
+        scene: "#version 3.7;\nlight_source { <0, 5, -5> rgb 1 }\nsphere { 0, 1\n  texture { uv_mapping normal { bumps 0.5 } }\n}\n",
+        includes: &[],
+    },
 ];
