@@ -126,16 +126,6 @@ fn assemble(scene: &Scene, settings: BuildSettings) -> Result<(World, Vec<Target
             message,
             origin: None,
         })?;
-    // Light groups' lights would have to shine only on the media of their own objects.
-    let media = builder.has_media || atmosphere.as_ref().is_some_and(|a| !a.media.is_empty());
-    if let Some(group) = builder.light_groups.iter().find(|g| !g.lights.is_empty())
-        && media
-    {
-        return Err(BuildError {
-            message: "not supported yet: light groups in a scene with media".into(),
-            origin: group.origin.clone(),
-        });
-    }
     // Photons of a projected light would have to pass through its object first.
     if let Some(light) = scene
         .lights
@@ -362,7 +352,7 @@ impl Builder {
         group: &scene::LightGroup,
         origin: &Origin,
         texture: Option<&Arc<scene::Texture>>,
-        interior: &Arc<Interior>,
+        interior: Option<&Arc<Interior>>,
         visibility: Visibility,
         double: bool,
     ) -> Result<Option<Object>, BuildError> {
@@ -381,7 +371,7 @@ impl Builder {
         self.outer_global_lights = Some(global_lights);
         let mut built = Vec::with_capacity(group.objects.len());
         for child in &group.objects {
-            built.extend(self.object(child, texture, Some(interior), visibility, double)?);
+            built.extend(self.object(child, texture, interior, visibility, double)?);
         }
         (self.light_set, self.outer_global_lights) = outer;
         Ok(match built.len() {
@@ -522,11 +512,20 @@ impl Builder {
         let (shape, frame) = match &object.shape {
             scene::Shape::LightGroup(group) => {
                 let double = flags.double_illuminate || inherited_double;
+                // Unlike a union, a light group passes on an interior only when it has one
+                // of its own (or inherited one): POV-Ray's pictures keep its objects'
+                // own `hollow`, and so the media inside them.
+                let own = object.interior.is_some() || flags.hollow.is_some();
+                let interior = if own {
+                    Some(&interior)
+                } else {
+                    inherited_interior
+                };
                 return self.light_group(
                     group,
                     &object.origin,
                     texture,
-                    &interior,
+                    interior,
                     visibility,
                     double,
                 );

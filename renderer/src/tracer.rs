@@ -105,7 +105,12 @@ impl World {
 
     /// The lights that shine on `leaf`.
     pub fn lights_for(&self, leaf: &Leaf) -> impl Iterator<Item = &Light> {
-        self.light_sets[leaf.light_set as usize]
+        self.light_set(leaf.light_set)
+    }
+
+    /// The lights of light set `set` (0: the scene's own lights).
+    pub fn light_set(&self, set: u32) -> impl Iterator<Item = &Light> {
+        self.light_sets[set as usize]
             .iter()
             .map(|&i| &self.lights[i as usize])
     }
@@ -183,12 +188,16 @@ impl<'w> Tracer<'w> {
             return Sample::default();
         }
         let q = Query::new(*ray, kind, self.tolerance(ray.origin), f64::INFINITY);
-        let (sample, depth) = match self.world.bvh.nearest(&q, &mut self.scratch) {
-            None => (self.missed(ray, kind), f64::INFINITY),
-            Some(hit) => (self.shade(ray, &hit, level, weight), hit.t),
+        let (sample, depth, light_set) = match self.world.bvh.nearest(&q, &mut self.scratch) {
+            None => (self.missed(ray, kind), f64::INFINITY, 0),
+            Some(hit) => (
+                self.shade(ray, &hit, level, weight),
+                hit.t,
+                hit.leaf.light_set,
+            ),
         };
         if self.world.participating {
-            return self.participate(ray, depth, sample);
+            return self.participate(ray, depth, light_set, sample);
         }
         sample
     }

@@ -189,13 +189,20 @@ impl<'w> Tracer<'w> {
 
     /// What a gathering ray brings back from `depth` along it, through media and fog when
     /// radiosity's `media` is on (it is off by default: radiosity rays see none).
-    fn through_media(&mut self, ray: &Ray, depth: f64, sample: colour::Sample) -> colour::Sample {
+    /// `light_set` lights the media, as in [`Tracer::participate`].
+    fn through_media(
+        &mut self,
+        ray: &Ray,
+        depth: f64,
+        light_set: u32,
+        sample: colour::Sample,
+    ) -> colour::Sample {
         let media = self
             .radiosity
             .as_ref()
             .is_some_and(|w| w.radiosity.settings.media);
         if media && self.world.participating {
-            self.participate(ray, depth, sample)
+            self.participate(ray, depth, light_set, sample)
         } else {
             sample
         }
@@ -299,7 +306,7 @@ impl<'w> Tracer<'w> {
             let ray = Ray::new(p, t * d.x + b * d.y + n * d.z);
             let Some(hit) = self.first_hit(&ray, RayKind::Radiosity) else {
                 let sky = self.missed(&ray, RayKind::Radiosity);
-                let sky = self.through_media(&ray, f64::INFINITY, sky);
+                let sky = self.through_media(&ray, f64::INFINITY, 0, sky);
                 total += limit(sky.colour, settings.max_sample);
                 continue;
             };
@@ -316,7 +323,8 @@ impl<'w> Tracer<'w> {
             let light = if level < world.max_trace_level {
                 let shaded = self.shade(&ray, &hit, level + 1, weight);
                 limit(
-                    self.through_media(&ray, hit.t, shaded).colour,
+                    self.through_media(&ray, hit.t, hit.leaf.light_set, shaded)
+                        .colour,
                     settings.max_sample,
                 )
             } else {

@@ -34,7 +34,18 @@ impl<'w> Tracer<'w> {
     /// nothing) through the media of the containers the ray is in, the atmospheric media,
     /// rainbows and fogs. Inside a solid (not hollow) object none of them shows, as in
     /// POV-Ray, where even a solid container's own media stay dark.
-    pub(crate) fn participate(&mut self, ray: &Ray, depth: f64, sample: Sample) -> Sample {
+    ///
+    /// Every medium along the stretch is lit by the lights of `light_set`: those of the
+    /// object the stretch ends at (the scene's lights where it meets nothing). That is
+    /// what POV-Ray's pictures show: a light group's light brightens the media in front
+    /// of its objects, its own or the atmosphere's, and no others.
+    pub(crate) fn participate(
+        &mut self,
+        ray: &Ray,
+        depth: f64,
+        light_set: u32,
+        sample: Sample,
+    ) -> Sample {
         let world = self.world;
         let length = ray.direction.length();
         if length == 0.0 {
@@ -60,7 +71,7 @@ impl<'w> Tracer<'w> {
                 .chain(atmosphere.iter().flat_map(|a| &a.media))
                 .any(|m| m.scatters());
             if scattering {
-                for light in world.lights.iter().filter(|l| l.media_interaction) {
+                for light in world.light_set(light_set).filter(|l| l.media_interaction) {
                     light.beam_crossings(&unit, (0.0, depth), &mut splits);
                 }
                 splits.sort_by(f64::total_cmp);
@@ -76,7 +87,7 @@ impl<'w> Tracer<'w> {
             let atmospheric = atmosphere.iter().flat_map(|a| &a.media);
             for (index, medium) in interior_media.chain(atmospheric).enumerate() {
                 let mut lighting = |p: DVec3, out: &mut Vec<Incident>| {
-                    self.media_lights(p, &inside, out);
+                    self.media_lights(p, &inside, light_set, out);
                     if let Some(photons) = photons {
                         photons.lights_at(p, &mut self.gather_scratch.found, out);
                     }
@@ -97,11 +108,17 @@ impl<'w> Tracer<'w> {
         seen
     }
 
-    /// The light of every light source that interacts with media arriving at `p`, a media
-    /// sample inside the containers `inside`, after shadows.
-    fn media_lights(&mut self, p: DVec3, inside: &[&'w Interior], out: &mut Vec<Incident>) {
+    /// The light of every light source of `light_set` that interacts with media arriving
+    /// at `p`, a media sample inside the containers `inside`, after shadows.
+    fn media_lights(
+        &mut self,
+        p: DVec3,
+        inside: &[&'w Interior],
+        light_set: u32,
+        out: &mut Vec<Incident>,
+    ) {
         let world = self.world;
-        for light in world.lights.iter().filter(|l| l.media_interaction) {
+        for light in world.light_set(light_set).filter(|l| l.media_interaction) {
             let Some(incoming) = light.incoming(p) else {
                 continue;
             };
@@ -161,6 +178,32 @@ mod tests {
         assert!(foggy.participating);
         let media = world("sphere { 0, 1 hollow interior { media { emission 1 } } }");
         assert!(media.participating && media.atmosphere.is_none());
+    }
+
+    #[test]
+    fn media_take_the_lights_of_the_object_their_stretch_ends_at() {
+        // A red scene light and a green group light. The group's ball holds a medium; the
+        // group's clear ball holds none, but the box's medium around it stretches to it.
+        let scene = |ball: &str| {
+            format!(
+                "camera {{ location <0, 0, -5> look_at 0 }}\n\
+                 light_source {{ <-5, 3, -5> rgb <1, 0, 0> shadowless }}\n\
+                 light_group {{ light_source {{ <5, 3, -5> rgb <0, 1, 0> shadowless }}\n\
+                 sphere {{ 0, 1 hollow pigment {{ rgbt 1 }} {ball} }} }}"
+            )
+        };
+        let own = scene("interior { media { scattering { 1, 0.5 } } }");
+        let lit = centre(&world(&own), &own);
+        assert!(lit.x == 0.0 && lit.y > 0.05, "{lit}");
+        let clear = format!(
+            "{}\nbox {{ -3, 3 hollow pigment {{ rgbt 1 }} \
+             interior {{ media {{ scattering {{ 1, 0.2 }} }} }} }}",
+            scene("")
+        );
+        let lit = centre(&world(&clear), &clear);
+        // Red only from the box's far stretch, which ends at the box; green from the two
+        // stretches that end at the ball, the second inside it (its `hollow` holds).
+        assert!(lit.y > 2.0 * lit.x && lit.x > 0.0, "{lit}");
     }
 
     #[test]
