@@ -45,6 +45,9 @@ impl Evaluator<'_> {
                 sides: 3,
                 tiles: 1,
                 pattern: 1,
+                form: 0,
+                exterior: 0,
+                interior: 0,
             }),
             FACETS_KW => PatternKind::Facets {
                 coords: 0.0,
@@ -63,15 +66,10 @@ impl Evaluator<'_> {
             NUMBER_OF_SIDES_KW => (3, 6, "number_of_sides of pavement must be 3, 4 or 6"),
             NUMBER_OF_TILES_KW => (1, 6, "number_of_tiles of pavement must be from 1 to 6"),
             PATTERN_KW => (1, 35, "pattern of pavement must be from 1 to 35"),
-            FORM_KW | EXTERIOR_KW | INTERIOR_KW => {
-                // POV-Ray's default corners are 0; the others are not drawn yet.
-                let look = self.int()?;
-                if look != 0 {
-                    let feature = format!("pavement {} {look}", self.text(token));
-                    return Err(self.unsupported(token, &feature));
-                }
-                return Ok(true);
-            }
+            // Whether form 3 fits the cells is checked with the pattern.
+            FORM_KW => (0, 3, "form of pavement must be from 0 to 3"),
+            EXTERIOR_KW => (0, 2, "exterior of pavement must be 0, 1 or 2"),
+            INTERIOR_KW => (0, 2, "interior of pavement must be 0, 1 or 2"),
             _ => return Ok(false),
         };
         let value = self.int()?;
@@ -82,6 +80,9 @@ impl Evaluator<'_> {
         match token.kind {
             NUMBER_OF_SIDES_KW => pavement.sides = value,
             NUMBER_OF_TILES_KW => pavement.tiles = value,
+            FORM_KW => pavement.form = value,
+            EXTERIOR_KW => pavement.exterior = value,
+            INTERIOR_KW => pavement.interior = value,
             _ => pavement.pattern = value,
         }
         Ok(true)

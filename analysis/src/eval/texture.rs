@@ -1581,6 +1581,24 @@ mod tests {
         evaluate_ok("plane { y, 0 pigment { tiling 24.9 } normal { tiling 3 } }");
     }
 
+    /// pavement's corner looks are read in any order and their ranges checked; whether
+    /// they fit the cells is checked with the pattern (`pattern::pavement::check`).
+    #[test]
+    fn pavement_looks_are_checked() {
+        assert_eq!(
+            evaluate_err("plane { y, 0 pigment { pavement form 4 } }"),
+            "form of pavement must be from 0 to 3"
+        );
+        assert_eq!(
+            evaluate_err("plane { y, 0 pigment { pavement interior -1 number_of_sides 4 } }"),
+            "interior of pavement must be 0, 1 or 2"
+        );
+        evaluate_ok(
+            "plane { y, 0 pigment { pavement form 3 interior 2 exterior 1 number_of_sides 4 } }",
+        );
+        evaluate_ok("plane { y, 0 pigment { pavement number_of_sides 6 exterior 2 } }");
+    }
+
     /// cutaway_textures is refused where it would change the picture, and accepted where
     /// it changes nothing (every part textured, or the CSG's own texture on the cut).
     #[test]

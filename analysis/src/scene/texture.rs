@@ -154,12 +154,25 @@ pub enum PatternKind {
 }
 
 /// The tile of a `pavement`: `number_of_sides` of its cells (3, 4 or 6),
-/// `number_of_tiles` (the cells in a tile, 1 to 6) and which `pattern` of those.
+/// `number_of_tiles` (the cells in a tile, 1 to 6) and which `pattern` of those, and the
+/// looks of its corners (0 sharp, 1 cut, 2 round): `form` where the tile turns (3, for
+/// squares, draws those as the others), `exterior` at its pointed ends, `interior` in its
+/// notches.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Pavement {
     pub sides: u8,
     pub tiles: u8,
     pub pattern: u8,
+    pub form: u8,
+    pub exterior: u8,
+    pub interior: u8,
+}
+
+impl Pavement {
+    /// Whether every corner has POV-Ray's default, sharp, look.
+    pub fn sharp(&self) -> bool {
+        self.form == 0 && self.exterior == 0 && self.interior == 0
+    }
 }
 
 /// The parameters of `slope { <Direction> [, Lo, Hi] [altitude <Altitude> [, Lo, Hi]] }`

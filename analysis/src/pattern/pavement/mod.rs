@@ -19,6 +19,8 @@
 //! vertex whose `i - k` is 1 modulo 3, so that the hexagon of side 1 centred at (1, 0)
 //! has its corners at (0, 0) and (2, 0), as in POV-Ray.
 
+mod corners;
+
 use super::floor;
 use crate::scene::Pavement;
 use glam::{DVec2, DVec3};
@@ -47,11 +49,20 @@ pub fn pattern_count(sides: u8, tiles: u8) -> u8 {
 /// Whether the pavement's combination exists; `Err` says what is wrong, in POV-Ray's
 /// terms.
 pub fn check(pavement: &Pavement) -> Result<(), String> {
-    let Pavement {
-        sides,
-        tiles,
-        pattern,
-    } = *pavement;
+    let (sides, tiles, pattern) = (pavement.sides, pavement.tiles, pavement.pattern);
+    let (form, exterior, interior) = (pavement.form, pavement.exterior, pavement.interior);
+    if form == 3 && sides != 4 {
+        return Err("pavement: form 3 is for square cells (number_of_sides 4) only".into());
+    }
+    // Hexagons have no pointed tile ends, and POV-Ray ignores their `exterior`.
+    let shaped = form != 0 || interior != 0 || (exterior != 0 && sides != 6);
+    if shaped && sides != 4 {
+        let cells = if sides == 3 { "triangles" } else { "hexagons" };
+        return Err(format!(
+            "not supported yet: pavement form {form} exterior {exterior} interior {interior} \
+             with {cells} (only the default corners, 0, are drawn for them)"
+        ));
+    }
     if sides == 6 && tiles == 6 {
         return Err("pavement: number_of_tiles must be from 1 to 5 for hexagons".into());
     }
@@ -168,6 +179,9 @@ struct Layout {
     /// a triangle pointing down after the one pointing up from the same vertex), the
     /// terms of its cell's corners, `corners` of them.
     terms: Vec<CornerTerms>,
+    /// For each vertex of the period, k major, the lattice directions (bit `d` for
+    /// direction `d` of `Lattice::steps`) in which tile edges leave it.
+    masks: Vec<u8>,
 }
 
 /// What a corner of a cell adds to the distance of a point in a square or triangle of
@@ -271,7 +285,15 @@ impl Layout {
             period,
             corners: lattice.corners((0, 0), false).len(),
             terms,
+            masks,
         }
+    }
+
+    /// The directions in which tile edges leave the lattice vertex `(i, k)`, as bits of
+    /// `Lattice::steps`.
+    fn mask(&self, (i, k): (i32, i32)) -> u8 {
+        let (p, q) = self.period;
+        self.masks[(k.rem_euclid(q) * p + i.rem_euclid(p)) as usize]
     }
 
     /// The distance from `q` to the tile's edges as the ramp counts it, where it is
@@ -443,19 +465,46 @@ pub fn value(pavement: &Pavement, p: DVec3) -> f64 {
     // Far out (where no float resolves a cell any more) the point is held where the
     // lattice indices and their neighbours stay within i32.
     let q = DVec2::new(p.x, p.z).clamp(DVec2::splat(-1e8), DVec2::splat(1e8));
-    1.0 - layout.distance(q, ramp) / ramp
+    let distance = if pavement.sharp() {
+        layout.distance(q, ramp)
+    } else {
+        corners::square_distance(layout, pavement, q)
+    };
+    1.0 - distance / ramp
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn at(sides: u8, tiles: u8, pattern: u8, x: f64, z: f64) -> f64 {
-        let pavement = Pavement {
+    /// The pavement of a combination with the corners' looks (`form`, `exterior`,
+    /// `interior`).
+    pub(super) fn pavement(
+        (sides, tiles, pattern): (u8, u8, u8),
+        (form, exterior, interior): (u8, u8, u8),
+    ) -> Pavement {
+        Pavement {
             sides,
             tiles,
             pattern,
-        };
+            form,
+            exterior,
+            interior,
+        }
+    }
+
+    /// A stream of pseudo-random numbers in 0..1 (xorshift), the same for a seed.
+    pub(super) fn random_numbers(mut seed: u64) -> impl FnMut() -> f64 {
+        move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
+    fn at(sides: u8, tiles: u8, pattern: u8, x: f64, z: f64) -> f64 {
+        let pavement = pavement((sides, tiles, pattern), (0, 0, 0));
         value(&pavement, DVec3::new(x, 3.0, z))
     }
 
@@ -496,13 +545,7 @@ mod tests {
     /// ramp where cells meet: across every lattice line the value is continuous.
     #[test]
     fn values_are_continuous_across_cell_edges() {
-        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
-        let mut random = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut random = random_numbers(0x2545_f491_4f6c_dd1d);
         for sides in [3, 4, 6] {
             let lattice = if sides == 4 {
                 Lattice::Square
@@ -545,11 +588,7 @@ mod tests {
         for sides in [3, 4, 6] {
             for tiles in 1..=6 {
                 for pattern in 1..=pattern_count(sides, tiles) {
-                    let pavement = Pavement {
-                        sides,
-                        tiles,
-                        pattern,
-                    };
+                    let pavement = pavement((sides, tiles, pattern), (0, 0, 0));
                     assert!(check(&pavement).is_ok());
                     let head = format!("pavement {sides} {tiles} {pattern} ");
                     assert!(lines[index(&pavement)].starts_with(&head), "{head}");
@@ -570,14 +609,8 @@ mod tests {
 
     #[test]
     fn combinations_povray_lacks_are_refused() {
-        let refused = |sides, tiles, pattern| {
-            check(&Pavement {
-                sides,
-                tiles,
-                pattern,
-            })
-            .is_err()
-        };
+        let refused =
+            |sides, tiles, pattern| check(&pavement((sides, tiles, pattern), (0, 0, 0))).is_err();
         assert!(refused(6, 6, 1));
         assert!(refused(4, 3, 3));
         assert!(refused(3, 4, 0));

@@ -1,0 +1,207 @@
+//! The looks of a pavement tile's corners other than POV-Ray's default sharp ones:
+//! `form` for the corners where a tile turns (slow convex corners), `exterior` for the
+//! corners of a tile's pointed ends (quick convex ones) and `interior` for its notches
+//! (concave corners); 0 is sharp, 1 cut and 2 round.
+//!
+//! Measured on POV-Ray 3.7 (its values read through 16-bit renders of a grey ramp, which
+//! these rules reproduce to 1e-4 on every square layout): a look is a norm, the Chebyshev
+//! one (sharp), the one whose unit disc is the square turned half a right angle (cut), or
+//! the Euclidean one (round), and each corner's ramp is a distance in that norm.
+//! - A cell whose tile turns in it (two adjacent tile edges, and a notch at the opposite
+//!   corner `c`) is drawn whole from `c`: the distance is the lesser of `|p - c|` and
+//!   `1 - |p - c|` in the `form`'s norm, so that the turn is a quarter ring round the
+//!   notch.
+//! - Elsewhere, the quarter of a cell at a corner where two of its edges are tile edges
+//!   takes `1/2 - |p - m|` in the `exterior`'s norm, `m` the cell's centre: a tile's end
+//!   is half a disc, a lone cell a whole one.
+//! - A notch, a corner where the tile's edges leave away from the cell, counts `|p - v|`
+//!   in the `interior`'s norm, `v` the corner.
+//!
+//! `form 3` draws a turning cell as any other (by `exterior` and `interior`).
+
+use super::{Layout, floor};
+use crate::scene::Pavement;
+use glam::DVec2;
+
+/// How a corner is drawn: the unit disc of the norm its ramp measures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Look {
+    Sharp,
+    Cut,
+    Round,
+}
+
+impl Look {
+    fn new(look: u8) -> Look {
+        match look {
+            0 => Look::Sharp,
+            1 => Look::Cut,
+            _ => Look::Round,
+        }
+    }
+
+    /// The norm of `(a, b)`.
+    fn norm(self, a: f64, b: f64) -> f64 {
+        let (a, b) = (a.abs(), b.abs());
+        match self {
+            Look::Sharp => a.max(b),
+            Look::Cut => a + b,
+            Look::Round => a.hypot(b),
+        }
+    }
+}
+
+/// Bits of a square lattice vertex's mask: tile edges towards +x, +z, -x and -z.
+const PLUS_X: u8 = 1;
+const PLUS_Z: u8 = 2;
+const MINUS_X: u8 = 4;
+const MINUS_Z: u8 = 8;
+
+/// The distance of `q` from the tile's edges as the ramp counts it (at most 1/2, where
+/// the ramp ends), for square cells with the corner looks of `pavement`.
+pub(super) fn square_distance(layout: &Layout, pavement: &Pavement, q: DVec2) -> f64 {
+    let (x, z) = (floor(q.x), floor(q.y));
+    let (u, w) = (q.x - x, q.y - z);
+    let (i, k) = (x as i32, z as i32);
+    // The masks of the cell's corners, by (cx, cz) offset from its lower left one.
+    let masks = [
+        [layout.mask((i, k)), layout.mask((i, k + 1))],
+        [layout.mask((i + 1, k)), layout.mask((i + 1, k + 1))],
+    ];
+    // The cell's own tile edges: along x at z = 0 and 1, along z at x = 0 and 1.
+    let along_x = [masks[0][0] & PLUS_X != 0, masks[0][1] & PLUS_X != 0];
+    let along_z = [masks[0][0] & PLUS_Z != 0, masks[1][0] & PLUS_Z != 0];
+    let edges = along_x.iter().chain(&along_z).filter(|&&e| e).count();
+
+    let interior = Look::new(pavement.interior);
+    let exterior = Look::new(pavement.exterior);
+    if pavement.form < 3 && edges == 2 && along_x.contains(&true) && along_z.contains(&true) {
+        // The corner opposite the tile's corner in the cell.
+        let cx = usize::from(!along_z[1]);
+        let cz = usize::from(!along_x[1]);
+        if outward(masks[cx][cz], cx, cz) == (true, true) {
+            let form = Look::new(pavement.form);
+            let from_notch = form.norm(u - cx as f64, w - cz as f64);
+            return from_notch.min(1.0 - from_notch).clamp(0.0, 0.5);
+        }
+    }
+
+    let mut nearest: f64 = 0.5;
+    for (edge, distance) in along_x.iter().zip([w, 1.0 - w]) {
+        if *edge {
+            nearest = nearest.min(distance);
+        }
+    }
+    for (edge, distance) in along_z.iter().zip([u, 1.0 - u]) {
+        if *edge {
+            nearest = nearest.min(distance);
+        }
+    }
+    for cx in 0..2 {
+        for cz in 0..2 {
+            // The distances from the corner along x and along z.
+            let a = (u - cx as f64).abs();
+            let b = (w - cz as f64).abs();
+            let edge_x = along_x[cz];
+            let edge_z = along_z[cx];
+            if edge_x && edge_z {
+                // A tile's corner in this cell: its quarter of the cell is a quarter of a
+                // disc round the cell's centre.
+                if a <= 0.5 && b <= 0.5 {
+                    nearest = nearest.min(0.5 - exterior.norm(0.5 - a, 0.5 - b));
+                }
+            } else if !edge_x && !edge_z {
+                nearest = nearest.min(match outward(masks[cx][cz], cx, cz) {
+                    (true, true) => interior.norm(a, b),
+                    (true, false) => b,
+                    (false, true) => a,
+                    (false, false) => continue,
+                });
+            }
+        }
+    }
+    nearest.max(0.0)
+}
+
+/// Whether tile edges leave the cell's corner `(cx, cz)` away from the cell, along x and
+/// along z, given the corner's mask.
+fn outward(mask: u8, cx: usize, cz: usize) -> (bool, bool) {
+    let x = if cx == 1 { PLUS_X } else { MINUS_X };
+    let z = if cz == 1 { PLUS_Z } else { MINUS_Z };
+    (mask & x != 0, mask & z != 0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::tests::{pavement, random_numbers};
+    use super::super::{check, layout, pattern_count, value};
+    use super::*;
+    use glam::DVec3;
+
+    /// `number_of_sides`, `number_of_tiles` and `pattern`; `form`, `exterior` and
+    /// `interior`; points' x and z and POV-Ray's values there.
+    type Case = ((u8, u8, u8), (u8, u8, u8), [(f64, f64, f64); 4]);
+
+    /// Values POV-Ray 3.7 gives at points of layouts with every look, read from 16-bit
+    /// renders of a `color_map { [0 rgb 0] [1 rgb 1] }` (so to 1e-4) at pixel centres.
+    #[test]
+    fn values_match_povrays() {
+        #[rustfmt::skip]
+        let cases: [Case; 10] = [
+            ((4, 3, 2), (1, 0, 0), [(5.025, 3.925, 0.95000), (1.825, 3.475, 0.65000), (5.525, 5.675, 0.35000), (2.575, 0.725, 0.70001)]),
+            ((4, 3, 2), (2, 0, 0), [(5.625, 2.275, 0.91441), (5.775, 4.625, 0.72192), (3.225, 5.425, 0.76777), (5.575, 3.325, 0.15000)]),
+            ((4, 6, 5), (3, 0, 1), [(0.725, 5.625, 0.45000), (5.225, 2.375, 0.25000), (1.975, 4.575, 0.15000), (2.275, 1.975, 0.95000)]),
+            ((4, 6, 5), (3, 2, 2), [(2.325, 5.625, 0.25000), (4.575, 5.675, 0.38079), (2.425, 5.725, 0.45000), (5.125, 0.525, 0.05000)]),
+            ((4, 4, 4), (0, 1, 0), [(3.325, 4.125, 0.75000), (2.325, 5.225, 0.35000), (1.625, 0.775, 0.25000), (2.325, 2.275, 0.80000)]),
+            ((4, 1, 1), (0, 2, 0), [(5.375, 3.625, 0.35355), (1.425, 2.475, 0.15811), (2.375, 5.575, 0.29155), (2.825, 4.675, 0.73825)]),
+            ((4, 5, 3), (1, 1, 1), [(2.575, 1.625, 0.40000), (3.025, 3.975, 0.95000), (4.425, 4.075, 0.85000), (4.825, 0.925, 0.50001)]),
+            ((4, 6, 17), (2, 2, 2), [(1.025, 1.525, 0.95131), (4.075, 2.325, 0.85000), (2.825, 2.625, 0.69642), (3.825, 0.375, 0.69642)]),
+            ((4, 4, 5), (3, 2, 1), [(3.125, 1.325, 0.10001), (2.125, 4.175, 0.65000), (5.225, 5.525, 0.05000), (3.325, 2.725, 0.45000)]),
+            ((4, 6, 34), (0, 0, 2), [(1.175, 4.925, 0.85000), (5.025, 3.825, 0.65000), (2.875, 0.025, 0.95000), (5.725, 3.325, 0.35000)]),
+        ];
+        for (combination, looks, points) in cases {
+            let pavement = pavement(combination, looks);
+            assert!(check(&pavement).is_ok());
+            for (x, z, povray) in points {
+                let ours = value(&pavement, DVec3::new(x, -1.0, z));
+                assert!(
+                    (ours - povray).abs() < 1e-4,
+                    "{combination:?} {looks:?} at ({x}, {z}): {ours} is not {povray}"
+                );
+            }
+        }
+    }
+
+    /// With every look sharp the rules here are the default ramp's, which the layouts'
+    /// corner terms compute faster: the two agree everywhere.
+    #[test]
+    fn sharp_looks_give_the_default_ramp() {
+        let mut random = random_numbers(0x9e37_79b9_7f4a_7c15);
+        for tiles in 1..=6 {
+            for pattern in 1..=pattern_count(4, tiles) {
+                let sharp = pavement((4, tiles, pattern), (0, 0, 0));
+                let layout = layout(&sharp);
+                for _ in 0..200 {
+                    let q = DVec2::new(random() * 24.0 - 12.0, random() * 24.0 - 12.0);
+                    let ours = square_distance(layout, &sharp, q);
+                    let default = layout.distance(q, 0.5);
+                    assert!((ours - default).abs() < 1e-12, "4 {tiles} {pattern} at {q}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn looks_other_cells_lack_are_refused() {
+        assert!(check(&pavement((3, 4, 2), (3, 0, 0))).is_err());
+        assert!(check(&pavement((6, 3, 2), (3, 0, 0))).is_err());
+        let message = check(&pavement((3, 4, 2), (0, 1, 0))).unwrap_err();
+        assert!(
+            message.starts_with("not supported yet: pavement"),
+            "{message}"
+        );
+        // Hexagons have no pointed ends: their exterior is ignored, as by POV-Ray.
+        assert!(check(&pavement((6, 3, 2), (0, 2, 0))).is_ok());
+        assert!(check(&pavement((4, 6, 35), (3, 2, 2))).is_ok());
+    }
+}
