@@ -4,9 +4,12 @@
 //! (concave corners); 0 is sharp, 1 cut and 2 round.
 //!
 //! Measured on POV-Ray 3.7 (its values read through 16-bit renders of a grey ramp, which
-//! these rules reproduce to 1e-4 on every square layout): a look is a norm, the Chebyshev
-//! one (sharp), the one whose unit disc is the square turned half a right angle (cut), or
-//! the Euclidean one (round), and each corner's ramp is a distance in that norm.
+//! these rules reproduce to 1e-4 on every square and hexagon layout tried): a look is a
+//! norm, whose unit disc is the sharp corner's polygon, that polygon turned to cut the
+//! corner, or a circle, and a corner's ramp is a distance in that norm.
+//!
+//! Square cells (`square_distance`), with the norms max(|a|, |b|), |a| + |b| and the
+//! Euclidean one:
 //! - A cell whose tile turns in it (two adjacent tile edges, and a notch at the opposite
 //!   corner `c`) is drawn whole from `c`: the distance is the lesser of `|p - c|` and
 //!   `1 - |p - c|` in the `form`'s norm, so that the turn is a quarter ring round the
@@ -16,10 +19,13 @@
 //!   is half a disc, a lone cell a whole one.
 //! - A notch, a corner where the tile's edges leave away from the cell, counts `|p - v|`
 //!   in the `interior`'s norm, `v` the corner.
+//! - `form 3` draws a turning cell as any other (by `exterior` and `interior`).
 //!
-//! `form 3` draws a turning cell as any other (by `exterior` and `interior`).
+//! Hexagon cells (`hexagon_distance`) have corners of 120 degrees, drawn by `form`, and
+//! notches of 240, drawn by `interior`; they have no pointed ends, and POV-Ray ignores
+//! their `exterior`.
 
-use super::{Layout, floor};
+use super::{Lattice, Layout, ROOT3_2, floor};
 use crate::scene::Pavement;
 use glam::DVec2;
 
@@ -49,6 +55,41 @@ impl Look {
             Look::Round => a.hypot(b),
         }
     }
+}
+
+impl Look {
+    /// The norm of `p` by which a hexagon's turning corner is drawn: a regular hexagon's
+    /// gauge, its faces across the lattice directions (sharp) or along them and scaled
+    /// to agree with the Euclidean norm across them (cut), or the Euclidean norm.
+    fn hexagon_turn_norm(self, p: DVec2) -> f64 {
+        match self {
+            Look::Sharp => across_lattice(p),
+            Look::Cut => along_lattice(p) / ROOT3_2,
+            Look::Round => p.length(),
+        }
+    }
+
+    /// The norm of `p` by which a hexagon tile's notch is drawn: as for a turning corner,
+    /// but the cut and round norms agree with the sharp one along the notch's bisector.
+    fn hexagon_notch_norm(self, p: DVec2) -> f64 {
+        match self {
+            Look::Sharp => across_lattice(p),
+            Look::Cut => along_lattice(p) * ROOT3_2,
+            Look::Round => p.length() * ROOT3_2,
+        }
+    }
+}
+
+/// The largest distance of `p` to the triangle lattice's three lines through the origin.
+fn across_lattice(p: DVec2) -> f64 {
+    let (a, b) = (0.5 * p.y, ROOT3_2 * p.x);
+    p.y.abs().max((a - b).abs()).max((a + b).abs())
+}
+
+/// The largest length of `p` along the triangle lattice's three directions.
+fn along_lattice(p: DVec2) -> f64 {
+    let (a, b) = (0.5 * p.x, ROOT3_2 * p.y);
+    p.x.abs().max((a + b).abs()).max((a - b).abs())
 }
 
 /// Bits of a square lattice vertex's mask: tile edges towards +x, +z, -x and -z.
@@ -123,6 +164,61 @@ pub(super) fn square_distance(layout: &Layout, pavement: &Pavement, q: DVec2) ->
     nearest.max(0.0)
 }
 
+/// The distance of `q` from the tile's edges as the ramp counts it (at most `ramp`),
+/// for hexagon cells with the corner looks of `pavement`: the tile's edges; where two
+/// edges of the cell meet at a tile corner (of 120 degrees), in the kite between that
+/// corner and the cell's centre `c`, `√3/2 - |q - c|` in the `form`'s norm; and at a
+/// notch (a corner where one edge of the cell and the edge leaving it outward are tile
+/// edges) `|q - v|` in the `interior`'s norm, `v` the corner.
+pub(super) fn hexagon_distance(layout: &Layout, pavement: &Pavement, q: DVec2, ramp: f64) -> f64 {
+    let lattice = Lattice::Hexagon;
+    let ((i, k), down) = lattice.locate(q);
+    // The cell's centre is the corner of the triangle holding `q` whose i - k is 1
+    // modulo 3.
+    let triangle = if down {
+        [(i + 1, k), (i + 1, k + 1), (i, k + 1)]
+    } else {
+        [(i, k), (i + 1, k), (i, k + 1)]
+    };
+    let centre = triangle
+        .into_iter()
+        .find(|(i, k)| (i - k).rem_euclid(3) == 1)
+        .unwrap_or((i, k));
+    let from_centre = q - lattice.position(centre);
+    let steps = lattice.steps();
+    // The corner whose kite holds `q`: the direction from the centre nearest to q's.
+    let kite = (0..6)
+        .max_by(|&a, &b| {
+            let along =
+                |d: usize| (lattice.position(steps[d]) - lattice.position((0, 0))).dot(from_centre);
+            along(a).total_cmp(&along(b))
+        })
+        .unwrap_or(0);
+    let form = Look::new(pavement.form);
+    let interior = Look::new(pavement.interior);
+    let mut nearest = ramp;
+    for (j, (di, dk)) in steps.iter().enumerate() {
+        let corner = (centre.0 + di, centre.1 + dk);
+        let mask = layout.mask(corner);
+        // The cell's edges from this corner to the next and to the previous one, and
+        // the lattice edge leaving it away from the cell.
+        let (next, previous, outward) = ((j + 2) % 6, (j + 4) % 6, j);
+        let edge = |d: usize| mask >> d & 1 != 0;
+        let from_corner = q - lattice.position(corner);
+        if edge(next) {
+            nearest = nearest.min(lattice.across(from_corner)[next % 3].abs());
+        }
+        if edge(next) && edge(previous) {
+            if j == kite && form != Look::Sharp {
+                nearest = nearest.min(ROOT3_2 - form.hexagon_turn_norm(from_centre));
+            }
+        } else if edge(outward) && (edge(next) || edge(previous)) {
+            nearest = nearest.min(interior.hexagon_notch_norm(from_corner));
+        }
+    }
+    nearest.max(0.0)
+}
+
 /// Whether tile edges leave the cell's corner `(cx, cz)` away from the cell, along x and
 /// along z, given the corner's mask.
 fn outward(mask: u8, cx: usize, cz: usize) -> (bool, bool) {
@@ -147,7 +243,7 @@ mod tests {
     #[test]
     fn values_match_povrays() {
         #[rustfmt::skip]
-        let cases: [Case; 10] = [
+        let cases: [Case; 18] = [
             ((4, 3, 2), (1, 0, 0), [(5.025, 3.925, 0.95000), (1.825, 3.475, 0.65000), (5.525, 5.675, 0.35000), (2.575, 0.725, 0.70001)]),
             ((4, 3, 2), (2, 0, 0), [(5.625, 2.275, 0.91441), (5.775, 4.625, 0.72192), (3.225, 5.425, 0.76777), (5.575, 3.325, 0.15000)]),
             ((4, 6, 5), (3, 0, 1), [(0.725, 5.625, 0.45000), (5.225, 2.375, 0.25000), (1.975, 4.575, 0.15000), (2.275, 1.975, 0.95000)]),
@@ -158,6 +254,14 @@ mod tests {
             ((4, 6, 17), (2, 2, 2), [(1.025, 1.525, 0.95131), (4.075, 2.325, 0.85000), (2.825, 2.625, 0.69642), (3.825, 0.375, 0.69642)]),
             ((4, 4, 5), (3, 2, 1), [(3.125, 1.325, 0.10001), (2.125, 4.175, 0.65000), (5.225, 5.525, 0.05000), (3.325, 2.725, 0.45000)]),
             ((4, 6, 34), (0, 0, 2), [(1.175, 4.925, 0.85000), (5.025, 3.825, 0.65000), (2.875, 0.025, 0.95000), (5.725, 3.325, 0.35000)]),
+            ((6, 1, 1), (1, 0, 0), [(0.475, 3.125, 0.22469), (3.125, 3.025, 0.72891), (4.775, 2.225, 0.90001), (4.825, 0.925, 0.70001)]),
+            ((6, 1, 1), (2, 0, 0), [(2.575, 5.425, 0.22249), (0.325, 0.825, 0.86142), (1.825, 2.075, 0.95818), (2.025, 4.975, 0.77450)]),
+            ((6, 3, 2), (0, 0, 1), [(0.675, 5.925, 0.52480), (0.375, 4.775, 0.60446), (1.025, 5.825, 0.17839), (4.725, 0.625, 0.03630)]),
+            ((6, 3, 2), (0, 0, 2), [(5.475, 1.775, 0.85122), (1.825, 3.075, 0.85106), (3.375, 4.225, 0.80708), (5.325, 3.425, 0.86455)]),
+            ((6, 5, 22), (1, 0, 1), [(4.125, 0.575, 0.24186), (0.575, 5.875, 0.45080), (2.975, 5.675, 0.09561), (3.325, 3.475, 0.70001)]),
+            ((6, 5, 22), (2, 0, 2), [(4.725, 1.975, 0.59580), (1.675, 1.025, 0.91046), (5.925, 3.875, 0.06331), (5.225, 0.075, 0.90106)]),
+            ((6, 4, 5), (1, 0, 2), [(5.375, 1.475, 0.10954), (4.875, 2.875, 0.50001), (3.125, 4.775, 0.64555), (4.775, 2.725, 0.90001)]),
+            ((6, 2, 1), (2, 0, 1), [(3.325, 5.175, 0.33942), (4.275, 5.975, 0.86125), (5.875, 0.325, 0.28035), (1.875, 2.125, 0.71534)]),
         ];
         for (combination, looks, points) in cases {
             let pavement = pavement(combination, looks);
@@ -177,15 +281,24 @@ mod tests {
     #[test]
     fn sharp_looks_give_the_default_ramp() {
         let mut random = random_numbers(0x9e37_79b9_7f4a_7c15);
-        for tiles in 1..=6 {
-            for pattern in 1..=pattern_count(4, tiles) {
-                let sharp = pavement((4, tiles, pattern), (0, 0, 0));
-                let layout = layout(&sharp);
-                for _ in 0..200 {
-                    let q = DVec2::new(random() * 24.0 - 12.0, random() * 24.0 - 12.0);
-                    let ours = square_distance(layout, &sharp, q);
-                    let default = layout.distance(q, 0.5);
-                    assert!((ours - default).abs() < 1e-12, "4 {tiles} {pattern} at {q}");
+        for (sides, ramp) in [(4, 0.5), (6, ROOT3_2 / 3.0)] {
+            for tiles in 1..=5 {
+                for pattern in 1..=pattern_count(sides, tiles) {
+                    let sharp = pavement((sides, tiles, pattern), (0, 0, 0));
+                    let layout = layout(&sharp);
+                    for _ in 0..200 {
+                        let q = DVec2::new(random() * 24.0 - 12.0, random() * 24.0 - 12.0);
+                        let ours = if sides == 4 {
+                            square_distance(layout, &sharp, q)
+                        } else {
+                            hexagon_distance(layout, &sharp, q, ramp)
+                        };
+                        let default = layout.distance(q, ramp);
+                        assert!(
+                            (ours - default).abs() < 1e-12,
+                            "{sides} {tiles} {pattern} at {q}: {ours} is not {default}"
+                        );
+                    }
                 }
             }
         }
@@ -202,6 +315,7 @@ mod tests {
         );
         // Hexagons have no pointed ends: their exterior is ignored, as by POV-Ray.
         assert!(check(&pavement((6, 3, 2), (0, 2, 0))).is_ok());
+        assert!(check(&pavement((6, 3, 2), (2, 0, 1))).is_ok());
         assert!(check(&pavement((4, 6, 35), (3, 2, 2))).is_ok());
     }
 }

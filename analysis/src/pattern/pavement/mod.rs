@@ -54,13 +54,10 @@ pub fn check(pavement: &Pavement) -> Result<(), String> {
     if form == 3 && sides != 4 {
         return Err("pavement: form 3 is for square cells (number_of_sides 4) only".into());
     }
-    // Hexagons have no pointed tile ends, and POV-Ray ignores their `exterior`.
-    let shaped = form != 0 || interior != 0 || (exterior != 0 && sides != 6);
-    if shaped && sides != 4 {
-        let cells = if sides == 3 { "triangles" } else { "hexagons" };
+    if (form, exterior, interior) != (0, 0, 0) && sides == 3 {
         return Err(format!(
             "not supported yet: pavement form {form} exterior {exterior} interior {interior} \
-             with {cells} (only the default corners, 0, are drawn for them)"
+             with triangles (only the default corners, 0, are drawn for them)"
         ));
     }
     if sides == 6 && tiles == 6 {
@@ -465,10 +462,12 @@ pub fn value(pavement: &Pavement, p: DVec3) -> f64 {
     // Far out (where no float resolves a cell any more) the point is held where the
     // lattice indices and their neighbours stay within i32.
     let q = DVec2::new(p.x, p.z).clamp(DVec2::splat(-1e8), DVec2::splat(1e8));
-    let distance = if pavement.sharp() {
-        layout.distance(q, ramp)
-    } else {
-        corners::square_distance(layout, pavement, q)
+    let distance = match layout.lattice {
+        _ if pavement.sharp() => layout.distance(q, ramp),
+        Lattice::Square => corners::square_distance(layout, pavement, q),
+        Lattice::Hexagon => corners::hexagon_distance(layout, pavement, q, ramp),
+        // `check` refuses other looks for triangles.
+        Lattice::Triangle => layout.distance(q, ramp),
     };
     1.0 - distance / ramp
 }
