@@ -50,15 +50,8 @@ pub fn pattern_count(sides: u8, tiles: u8) -> u8 {
 /// terms.
 pub fn check(pavement: &Pavement) -> Result<(), String> {
     let (sides, tiles, pattern) = (pavement.sides, pavement.tiles, pavement.pattern);
-    let (form, exterior, interior) = (pavement.form, pavement.exterior, pavement.interior);
-    if form == 3 && sides != 4 {
+    if pavement.form == 3 && sides != 4 {
         return Err("pavement: form 3 is for square cells (number_of_sides 4) only".into());
-    }
-    if (form, exterior, interior) != (0, 0, 0) && sides == 3 {
-        return Err(format!(
-            "not supported yet: pavement form {form} exterior {exterior} interior {interior} \
-             with triangles (only the default corners, 0, are drawn for them)"
-        ));
     }
     if sides == 6 && tiles == 6 {
         return Err("pavement: number_of_tiles must be from 1 to 5 for hexagons".into());
@@ -466,8 +459,7 @@ pub fn value(pavement: &Pavement, p: DVec3) -> f64 {
         _ if pavement.sharp() => layout.distance(q, ramp),
         Lattice::Square => corners::square_distance(layout, pavement, q),
         Lattice::Hexagon => corners::hexagon_distance(layout, pavement, q, ramp),
-        // `check` refuses other looks for triangles.
-        Lattice::Triangle => layout.distance(q, ramp),
+        Lattice::Triangle => corners::triangle_distance(layout, pavement, q, ramp),
     };
     1.0 - distance / ramp
 }
