@@ -157,17 +157,78 @@ impl Lattice {
     }
 }
 
+/// How far beyond the ramp a corner's term must stay over a whole square or triangle to
+/// be left out of it: far above the rounding of a point's offset from a corner, even a
+/// hundred million units out, so a term left out is one that could only give the ramp's
+/// end.
+const UNREACHED: f64 = 1e-6;
+
+impl Lattice {
+    /// The ramp's width: half a square, or a triangle's inradius.
+    fn ramp(self) -> f64 {
+        match self {
+            Lattice::Square => 0.5,
+            _ => ROOT3_2 / 3.0,
+        }
+    }
+
+    /// The corners' positions of the square or triangle whose first vertex is `(i, k)`.
+    fn outline(self, (i, k): (i32, i32), down: bool) -> Vec<DVec2> {
+        let corners = match (self, down) {
+            (Lattice::Square, _) => vec![(i, k), (i + 1, k), (i + 1, k + 1), (i, k + 1)],
+            (_, false) => vec![(i, k), (i + 1, k), (i, k + 1)],
+            (_, true) => vec![(i + 1, k), (i + 1, k + 1), (i, k + 1)],
+        };
+        corners.into_iter().map(|c| self.position(c)).collect()
+    }
+
+    /// The least each of a corner's terms (its distances to the three lattice lines
+    /// through it, and the largest of them) can be over the convex polygon `outline`, or
+    /// a lower bound of it.
+    fn lowest(self, corner: DVec2, outline: &[DVec2]) -> [f64; 4] {
+        let across: Vec<[f64; 3]> = outline.iter().map(|&c| self.across(c - corner)).collect();
+        let line = |n: usize| {
+            let (low, high) = across
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), a| {
+                    (l.min(a[n]), h.max(a[n]))
+                });
+            // A line through the polygon is at no distance from it.
+            if low <= 0.0 && high >= 0.0 {
+                0.0
+            } else {
+                low.abs().min(high.abs())
+            }
+        };
+        // The largest distance is at least the Euclidean distance times the least of it
+        // over a circle: 1/√2 for the square lattice's lines, √3/2 for the others'.
+        let euclidean = (0..outline.len())
+            .map(|n| {
+                let (a, b) = (outline[n], outline[(n + 1) % outline.len()]);
+                let t = ((corner - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+                corner.distance(a + (b - a) * t)
+            })
+            .fold(f64::INFINITY, f64::min);
+        let circle = match self {
+            Lattice::Square => std::f64::consts::FRAC_1_SQRT_2,
+            _ => ROOT3_2,
+        };
+        [line(0), line(1), line(2), euclidean * circle]
+    }
+}
+
 /// One layout over its period, as what each corner of each cell of the period adds to
 /// a point's distance from the tile edges.
 struct Layout {
     lattice: Lattice,
     /// The period in lattice indices along i and along k.
     period: (i32, i32),
-    /// How many corners a cell has.
-    corners: usize,
     /// For each square or triangle of the period (numbered by its first vertex, k major,
-    /// a triangle pointing down after the one pointing up from the same vertex), the
-    /// terms of its cell's corners, `corners` of them.
+    /// a triangle pointing down after the one pointing up from the same vertex), where
+    /// its terms start in `terms`; one past the end, where they end.
+    starts: Vec<u32>,
+    /// The terms of each square's or triangle's cell's corners, but those that cannot
+    /// come within the ramp of any of its points.
     terms: Vec<CornerTerms>,
     /// For each vertex of the period, k major, the lattice directions (bit `d` for
     /// direction `d` of `Lattice::steps`) in which tile edges leave it.
@@ -224,10 +285,13 @@ impl Layout {
             Lattice::Square => &[false],
             _ => &[false, true],
         };
+        let reach = lattice.ramp();
         let mut terms = Vec::new();
+        let mut starts = vec![0];
         for k in 0..q {
             for i in 0..p {
                 for &down in shapes {
+                    let outline = lattice.outline((i, k), down);
                     // The square's or triangle's centre tells each corner's sector.
                     let third = if down { 2.0 / 3.0 } else { 1.0 / 3.0 };
                     let centre = match lattice {
@@ -262,18 +326,25 @@ impl Layout {
                         {
                             counts[d % half] = true;
                         }
-                        terms.push(CornerTerms {
-                            offset: (corner.0 - i, corner.1 - k),
-                            skips: counts.map(|c| if c { 0.0 } else { f64::INFINITY }),
-                        });
+                        let lowest = lattice.lowest(lattice.position(corner), &outline);
+                        for (count, lowest) in counts.iter_mut().zip(lowest) {
+                            *count &= lowest < reach + UNREACHED;
+                        }
+                        if counts.contains(&true) {
+                            terms.push(CornerTerms {
+                                offset: (corner.0 - i, corner.1 - k),
+                                skips: counts.map(|c| if c { 0.0 } else { f64::INFINITY }),
+                            });
+                        }
                     }
+                    starts.push(terms.len() as u32);
                 }
             }
         }
         Layout {
             lattice,
             period,
-            corners: lattice.corners((0, 0), false).len(),
+            starts,
             terms,
             masks,
         }
@@ -301,9 +372,8 @@ impl Layout {
         let least = |a: f64, b: f64| if b < a { b } else { a };
         let greatest = |a: f64, b: f64| if b > a { b } else { a };
         let mut nearest = reach;
-        let n = self.corners;
-        let terms = self.terms.get(cell * n..(cell + 1) * n).unwrap_or(&[]);
-        for terms in terms {
+        let (start, end) = (self.starts[cell], self.starts[cell + 1]);
+        for terms in &self.terms[start as usize..end as usize] {
             let corner = (i + terms.offset.0, k + terms.offset.1);
             let [d0, d1, d2] = self
                 .lattice
@@ -447,11 +517,7 @@ const fn starts<const N: usize, const M: usize>(counts: &[u8; N]) -> [usize; M] 
 /// `check`.
 pub fn value(pavement: &Pavement, p: DVec3) -> f64 {
     let layout = layout(pavement);
-    let ramp = if layout.lattice == Lattice::Square {
-        0.5
-    } else {
-        ROOT3_2 / 3.0
-    };
+    let ramp = layout.lattice.ramp();
     // Far out (where no float resolves a cell any more) the point is held where the
     // lattice indices and their neighbours stay within i32.
     let q = DVec2::new(p.x, p.z).clamp(DVec2::splat(-1e8), DVec2::splat(1e8));
