@@ -128,24 +128,31 @@ pub fn pigment_colour(pigment: &Pigment, world: DVec3) -> Colour {
             if entries.is_empty() {
                 return Colour::BLACK;
             }
-            let entries_at = entry_point(pattern, world).unwrap_or(world);
+            // Where the entries are evaluated costs the pattern's warps and turbulence
+            // over again: it is found only for an entry that is not a plain colour (a
+            // colour map's never are), and once.
+            let entries_at = std::cell::OnceCell::new();
+            let entry_colour = |entry: &Pigment| match entry {
+                Pigment::Solid(c) => *c,
+                entry => pigment_colour(
+                    entry,
+                    *entries_at.get_or_init(|| entry_point(pattern, world).unwrap_or(world)),
+                ),
+            };
             if matches!(pattern.kind, PatternKind::Average) {
                 return weighted_colour(
-                    average_shares(entries)
-                        .map(|(share, entry)| (share, pigment_colour(entry, entries_at))),
+                    average_shares(entries).map(|(share, entry)| (share, entry_colour(entry))),
                 );
             }
             match evaluate(pattern, world) {
-                PatternValue::Block(i) => {
-                    pigment_colour(&entries[i.min(entries.len() - 1)].1, entries_at)
-                }
+                PatternValue::Block(i) => entry_colour(&entries[i.min(entries.len() - 1)].1),
                 PatternValue::Blend(v) => {
                     let (a, b, t) = blend_position(entries.iter().map(|(at, _)| *at), v);
-                    let lower = pigment_colour(&entries[a].1, entries_at);
+                    let lower = entry_colour(&entries[a].1);
                     if a == b {
                         lower
                     } else {
-                        lower.lerp(pigment_colour(&entries[b].1, entries_at), t)
+                        lower.lerp(entry_colour(&entries[b].1), t)
                     }
                 }
             }
