@@ -3,6 +3,7 @@
 
 use super::expr::EPSILON;
 use super::stream::SkipStop;
+use super::symbols::Symbol;
 use super::tokens::{Cond, Frame, FrameKind, Token};
 use super::value::{Array, Value};
 use super::{Evaluator, Message, Result, Stream};
@@ -144,7 +145,10 @@ impl Evaluator<'_> {
             };
             return Err(self.error_at(&name, message));
         }
-        let text = self.text(&name).to_owned();
+        // The name's symbol is looked up (and a new name numbered) where the name was
+        // found, when the declaration needs it.
+        let frame = self.frames.last().expect("the main frame is never popped");
+        let name_at = (frame.file, frame.pos - 1);
         let mut indices = Vec::new();
         let mut key = None;
         loop {
@@ -168,7 +172,8 @@ impl Evaluator<'_> {
                     return Err(self.error_at(
                         &next,
                         format!(
-                            "expected '=' after '{text}', found {}",
+                            "expected '=' after '{}', found {}",
+                            self.text(&name),
                             self.describe(&next)
                         ),
                     ));
@@ -180,10 +185,13 @@ impl Evaluator<'_> {
         // scope and frame depth of the directive itself are the ones that count.
         let scope = self.scopes.len() - 1;
         let depth = self.frames.len();
-        if local && indices.is_empty() && key.is_none() && !self.defines(scope, &text) {
-            // POV-Ray creates a #local before reading its value, so the value cannot use an
-            // outer identifier of the same name.
-            self.declare_local_in(scope, &text, Value::Uninitialized);
+        if local && indices.is_empty() && key.is_none() {
+            let symbol = self.symbol_at(name_at.0, name_at.1);
+            if !self.scopes[scope].contains_key(&symbol) {
+                // POV-Ray creates a #local before reading its value, so the value cannot
+                // use an outer identifier of the same name.
+                self.declare_local_symbol_in(scope, symbol, Value::Uninitialized);
+            }
         }
         let first = self.guarded_at(depth, Self::next)?;
         self.unget(first.clone());
@@ -192,15 +200,16 @@ impl Evaluator<'_> {
         // ending a macro body is followed by its #end); then the scope read on to counts.
         let scope = scope.min(self.scopes.len() - 1);
         let needs_semicolon = value.is_numeric();
+        let symbol = self.symbol_at(name_at.0, name_at.1);
         if !indices.is_empty() {
-            self.assign_element(&name, &text, &indices, value)?;
+            self.assign_element(&name, symbol, &indices, value)?;
         } else if let Some(key) = key {
-            self.assign_key(&name, &text, key, value)?;
+            self.assign_key(&name, symbol, key, value)?;
         } else {
             let existing = if local {
-                self.local_slot(scope, &text)
+                self.scopes[scope].get(&symbol).cloned()
             } else {
-                self.lookup_in(scope, &text)
+                self.lookup_symbol_in(scope, symbol)
             };
             if let (Some(slot), Value::Function(_)) = (existing, &value)
                 && matches!(&*slot.borrow(), Value::Function(_))
@@ -208,14 +217,15 @@ impl Evaluator<'_> {
                 return Err(self.error_at(
                     &name,
                     format!(
-                        "function '{text}' is already declared; #undef it before declaring it again"
+                        "function '{}' is already declared; #undef it before declaring it again",
+                        self.text(&name)
                     ),
                 ));
             }
             if local {
-                self.declare_local_in(scope, &text, value);
+                self.declare_local_symbol_in(scope, symbol, value);
             } else {
-                self.declare_in(scope, &text, value);
+                self.declare_symbol_in(scope, symbol, value);
             }
         }
         // A '#' given back here is a held-back #declare: the ';' is missing, and that
@@ -238,13 +248,14 @@ impl Evaluator<'_> {
     fn assign_element(
         &mut self,
         at: &Token,
-        name: &str,
+        symbol: Symbol,
         indices: &[(i64, Token)],
         value: Value,
     ) -> Result<()> {
-        let Some(slot) = self.lookup(name) else {
+        let Some(slot) = self.lookup_symbol(symbol) else {
             return Err(self.undeclared(at));
         };
+        let name = self.text(at);
         let mut stored = slot.borrow_mut();
         let Value::Array(array) = &mut *stored else {
             return Err(self.error_at(
@@ -282,10 +293,11 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    fn assign_key(&mut self, at: &Token, name: &str, key: String, value: Value) -> Result<()> {
-        let Some(slot) = self.lookup(name) else {
+    fn assign_key(&mut self, at: &Token, symbol: Symbol, key: String, value: Value) -> Result<()> {
+        let Some(slot) = self.lookup_symbol(symbol) else {
             return Err(self.undeclared(at));
         };
+        let name = self.text(at);
         let mut stored = slot.borrow_mut();
         let Value::Dictionary(dict) = &mut *stored else {
             return Err(self.error_at(

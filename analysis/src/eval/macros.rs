@@ -216,13 +216,9 @@ impl Evaluator<'_> {
             && ident.kind == IDENT
             && matches!(after.kind, COMMA | R_PAREN)
         {
-            let file = self
-                .frames
-                .last()
-                .expect("the main frame is never popped")
-                .file;
-            let name = &self.files[file as usize].text[ident.start as usize..ident.end as usize];
-            if let Some(slot) = self.lookup(name)
+            let frame = self.frames.last().expect("the main frame is never popped");
+            let symbol = self.symbol_at(frame.file, frame.pos);
+            if let Some(slot) = self.lookup_symbol(symbol)
                 && !matches!(&*slot.borrow(), Value::Macro(_))
             {
                 self.next_raw()?;

@@ -51,6 +51,7 @@ use std::sync::Arc;
 use symbols::Scope;
 use syntax::{Diagnostic, TextRange};
 use tokens::{FileId, Frame, FrameKind, SourceFile, Token};
+use value::Slot;
 
 /// Every evaluation error stops the evaluation; boxed to keep results small.
 pub(crate) type Result<T> = std::result::Result<T, Box<Diagnostic>>;
@@ -213,6 +214,9 @@ pub(crate) struct Evaluator<'a> {
     interner: symbols::Interner,
     /// Emptied tables of ended scopes, for `push_scope` to reuse.
     spare_scopes: Vec<Scope>,
+    /// Storage of ended scopes' definitions that nothing else held, emptied, for new
+    /// definitions to reuse instead of allocating (see `Evaluator::new_slot`).
+    spare_slots: Vec<Slot>,
     /// Tokens given back by the parsers, read again before the stream.
     pushed: Vec<Token>,
     /// The frame depths at which a declaration's value is being read, innermost last.
@@ -280,6 +284,7 @@ impl<'a> Evaluator<'a> {
             scopes: vec![globals],
             interner,
             spare_scopes: Vec::new(),
+            spare_slots: Vec::new(),
             pushed: Vec::new(),
             declaring: Vec::new(),
             macro_calls_held: false,

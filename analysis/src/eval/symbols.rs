@@ -18,6 +18,9 @@ pub type Symbol = u32;
 /// SipHash: the keys are the evaluator's own symbol numbers.
 pub type Scope = std::collections::HashMap<Symbol, Slot, rustc_hash::FxBuildHasher>;
 
+/// How many emptied definitions' storage is kept for reuse at most.
+const MAX_SPARE_SLOTS: usize = 256;
+
 /// A token position whose symbol has not been looked up yet.
 const UNKNOWN: Symbol = Symbol::MAX;
 
@@ -84,11 +87,32 @@ impl Evaluator<'_> {
         self.scopes.push(scope);
     }
 
-    /// Closes the newest scope; its definitions are dropped now.
+    /// Closes the newest scope; its definitions are dropped now. Their storage, when
+    /// nothing else holds it (a by-reference argument's belongs to the caller), is kept
+    /// for new definitions: a macro's parameters and locals are defined anew on every call.
     pub fn pop_scope(&mut self) {
         if let Some(mut scope) = self.scopes.pop() {
-            scope.clear();
+            for (_, slot) in scope.drain() {
+                if self.spare_slots.len() < MAX_SPARE_SLOTS
+                    && Rc::strong_count(&slot) == 1
+                    && Rc::weak_count(&slot) == 0
+                {
+                    *slot.borrow_mut() = Value::Uninitialized;
+                    self.spare_slots.push(slot);
+                }
+            }
             self.spare_scopes.push(scope);
+        }
+    }
+
+    /// New storage holding `value`.
+    fn new_slot(&mut self, value: Value) -> Slot {
+        match self.spare_slots.pop() {
+            Some(slot) => {
+                *slot.borrow_mut() = value;
+                slot
+            }
+            None => Rc::new(RefCell::new(value)),
         }
     }
 
@@ -108,16 +132,11 @@ impl Evaluator<'_> {
         self.lookup_symbol_in(self.scopes.len() - 1, symbol)
     }
 
-    fn lookup_symbol_in(&self, scope: usize, symbol: Symbol) -> Option<Slot> {
+    pub fn lookup_symbol_in(&self, scope: usize, symbol: Symbol) -> Option<Slot> {
         self.scopes[..=scope]
             .iter()
             .rev()
             .find_map(|scope| scope.get(&symbol).cloned())
-    }
-
-    /// Whether scope `scope` itself defines `name`.
-    pub fn defines(&self, scope: usize, name: &str) -> bool {
-        self.local_slot(scope, name).is_some()
     }
 
     /// The storage of `name` in scope `scope` itself.
@@ -134,6 +153,11 @@ impl Evaluator<'_> {
     /// `#declare name = value` as seen from scope `scope`.
     pub fn declare_in(&mut self, scope: usize, name: &str, value: Value) {
         let symbol = self.interner.intern(name);
+        self.declare_symbol_in(scope, symbol, value);
+    }
+
+    /// `#declare symbol = value` as seen from scope `scope`.
+    pub fn declare_symbol_in(&mut self, scope: usize, symbol: Symbol, value: Value) {
         if let Some(slot) = self.lookup_symbol_in(scope, symbol) {
             *slot.borrow_mut() = value;
         } else {
@@ -148,18 +172,13 @@ impl Evaluator<'_> {
         self.declare_local_symbol_in(self.scopes.len() - 1, symbol, value);
     }
 
-    /// `#local name = value` in scope `scope`.
-    pub fn declare_local_in(&mut self, scope: usize, name: &str, value: Value) {
-        let symbol = self.interner.intern(name);
-        self.declare_local_symbol_in(scope, symbol, value);
-    }
-
     /// `#local symbol = value` in scope `scope`.
     pub fn declare_local_symbol_in(&mut self, scope: usize, symbol: Symbol, value: Value) {
         match self.scopes[scope].get(&symbol) {
             Some(slot) => *slot.borrow_mut() = value,
             None => {
-                self.scopes[scope].insert(symbol, Rc::new(RefCell::new(value)));
+                let slot = self.new_slot(value);
+                self.scopes[scope].insert(symbol, slot);
             }
         }
     }
