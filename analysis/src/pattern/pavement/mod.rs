@@ -172,43 +172,45 @@ impl Lattice {
         }
     }
 
-    /// The corners' positions of the square or triangle whose first vertex is `(i, k)`.
-    fn outline(self, (i, k): (i32, i32), down: bool) -> Vec<DVec2> {
+    /// The corners' positions of the square or triangle whose first vertex is `(i, k)`,
+    /// and how many there are.
+    fn outline(self, (i, k): (i32, i32), down: bool) -> ([DVec2; 4], usize) {
         let corners = match (self, down) {
-            (Lattice::Square, _) => vec![(i, k), (i + 1, k), (i + 1, k + 1), (i, k + 1)],
-            (_, false) => vec![(i, k), (i + 1, k), (i, k + 1)],
-            (_, true) => vec![(i + 1, k), (i + 1, k + 1), (i, k + 1)],
+            (Lattice::Square, _) => [(i, k), (i + 1, k), (i + 1, k + 1), (i, k + 1)],
+            (_, false) => [(i, k), (i + 1, k), (i, k + 1), (i, k)],
+            (_, true) => [(i + 1, k), (i + 1, k + 1), (i, k + 1), (i + 1, k)],
         };
-        corners.into_iter().map(|c| self.position(c)).collect()
+        let count = if self == Lattice::Square { 4 } else { 3 };
+        (corners.map(|c| self.position(c)), count)
     }
 
     /// The least each of a corner's terms (its distances to the three lattice lines
     /// through it, and the largest of them) can be over the convex polygon `outline`, or
     /// a lower bound of it.
     fn lowest(self, corner: DVec2, outline: &[DVec2]) -> [f64; 4] {
-        let across: Vec<[f64; 3]> = outline.iter().map(|&c| self.across(c - corner)).collect();
+        let mut low = [f64::INFINITY; 3];
+        let mut high = [f64::NEG_INFINITY; 3];
+        // The Euclidean distance from the corner to the polygon's edges.
+        let mut euclidean = f64::INFINITY;
+        for (n, &a) in outline.iter().enumerate() {
+            for (line, value) in self.across(a - corner).into_iter().enumerate() {
+                low[line] = low[line].min(value);
+                high[line] = high[line].max(value);
+            }
+            let b = outline[(n + 1) % outline.len()];
+            let t = ((corner - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+            euclidean = euclidean.min(corner.distance(a + (b - a) * t));
+        }
+        // A line through the polygon is at no distance from it.
         let line = |n: usize| {
-            let (low, high) = across
-                .iter()
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), a| {
-                    (l.min(a[n]), h.max(a[n]))
-                });
-            // A line through the polygon is at no distance from it.
-            if low <= 0.0 && high >= 0.0 {
+            if low[n] <= 0.0 && high[n] >= 0.0 {
                 0.0
             } else {
-                low.abs().min(high.abs())
+                low[n].abs().min(high[n].abs())
             }
         };
         // The largest distance is at least the Euclidean distance times the least of it
         // over a circle: 1/√2 for the square lattice's lines, √3/2 for the others'.
-        let euclidean = (0..outline.len())
-            .map(|n| {
-                let (a, b) = (outline[n], outline[(n + 1) % outline.len()]);
-                let t = ((corner - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
-                corner.distance(a + (b - a) * t)
-            })
-            .fold(f64::INFINITY, f64::min);
         let circle = match self {
             Lattice::Square => std::f64::consts::FRAC_1_SQRT_2,
             _ => ROOT3_2,
@@ -291,7 +293,8 @@ impl Layout {
         for k in 0..q {
             for i in 0..p {
                 for &down in shapes {
-                    let outline = lattice.outline((i, k), down);
+                    let (outline, count) = lattice.outline((i, k), down);
+                    let outline = &outline[..count];
                     // The square's or triangle's centre tells each corner's sector.
                     let third = if down { 2.0 / 3.0 } else { 1.0 / 3.0 };
                     let centre = match lattice {
@@ -326,7 +329,7 @@ impl Layout {
                         {
                             counts[d % half] = true;
                         }
-                        let lowest = lattice.lowest(lattice.position(corner), &outline);
+                        let lowest = lattice.lowest(lattice.position(corner), outline);
                         for (count, lowest) in counts.iter_mut().zip(lowest) {
                             *count &= lowest < reach + UNREACHED;
                         }
