@@ -5,7 +5,7 @@
 //! pins down to 1e-7. The normal is the gradient of |h_n|² with respect to the point.
 
 use super::Root;
-use crate::fast_math::{max, min, round};
+use crate::fast_math::{ln, max, min, round};
 use crate::ray::Ray;
 use analysis::scene::math_shapes::{JuliaAlgebra, JuliaFunction};
 use glam::{DVec3, DVec4};
@@ -112,7 +112,7 @@ impl Julia {
                 }
                 // POV-Ray's estimate over the k points of the orbit so far, the escaping
                 // one included: |h|·ln|h|² / (n^k · Π|h_j|).
-                let dist = norm.ln() / (product.sqrt() * scale * power);
+                let dist = ln(norm) / (product.sqrt() * scale * power);
                 return Orbit::escaped(value, dist, stretch);
             }
             if !DISTANCE {
