@@ -7,6 +7,7 @@
 
 use crate::focal_blur::FocalBlur;
 use crate::ray::Ray;
+use crate::texture_point::TexturePoint;
 use analysis::scene::{self, CameraKind};
 use glam::{DMat3, DVec3};
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -195,7 +196,8 @@ impl Camera {
         if let Some(normal) = &self.normal {
             // POV-Ray samples the camera's normal pattern on the image itself, at the
             // position (x0, y0, 0), and pushes the ray's world direction by it.
-            direction = crate::normal::perturb(normal, DVec3::new(x0, y0, 0.0), direction, None);
+            let at = TexturePoint::in_space(DVec3::new(x0, y0, 0.0));
+            direction = crate::normal::perturb(normal, &at, direction);
         }
         (direction != DVec3::ZERO && direction.is_finite() && origin.is_finite())
             .then(|| Ray::new(origin, direction))

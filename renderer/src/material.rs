@@ -197,7 +197,9 @@ impl Surface {
     /// Whether some pattern is uv-mapped.
     pub fn uses_uv(&self) -> bool {
         match self {
-            Surface::Layers(layers) => layers.iter().any(|l| l.pigment.uses_uv()),
+            Surface::Layers(layers) => layers.iter().any(|l| {
+                l.pigment.uses_uv() || l.normal.as_ref().is_some_and(crate::normal::uses_uv)
+            }),
             Surface::Pattern { pattern, map } => {
                 pattern.uv_mapping || map.iter().any(|(_, s)| s.uses_uv())
             }

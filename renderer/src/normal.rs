@@ -13,19 +13,14 @@
 //! to the world like a normal: scaling a pattern changes where its bumps are, not how
 //! steep they look.
 
+use crate::texture_point::TexturePoint;
 use analysis::noise;
 use analysis::pattern::{self, Facing, PatternValue, cells, waves};
-use analysis::scene::{self, BlendMap, NormalKind, Pattern, PatternKind, Warp};
+use analysis::scene::{self, BlendMap, NormalKind, Pattern, PatternKind, Transform, Warp};
 use glam::{DMat3, DVec3};
 
 /// Whether the normal can be evaluated; `Err` names what is missing.
 pub fn check(normal: &scene::Normal) -> Result<(), String> {
-    let (NormalKind::Pattern { pattern, .. }
-    | NormalKind::BumpMap { pattern, .. }
-    | NormalKind::Map { pattern, .. }) = &normal.kind;
-    if pattern.uv_mapping {
-        return Err("not supported yet: uv_mapping on a normal".into());
-    }
     match &normal.kind {
         NormalKind::Pattern { pattern, .. } => match pattern.kind {
             PatternKind::Facets { .. } => Ok(()),
@@ -36,6 +31,19 @@ pub fn check(normal: &scene::Normal) -> Result<(), String> {
             map.entries.iter().try_for_each(|(_, n)| check(n))
         }
         NormalKind::BumpMap { pattern, .. } => pattern::check(pattern),
+    }
+}
+
+/// Whether some pattern of the normal is uv-mapped, so that hits must find their uv
+/// coordinates.
+pub fn uses_uv(normal: &scene::Normal) -> bool {
+    match &normal.kind {
+        NormalKind::Pattern { pattern, .. } | NormalKind::BumpMap { pattern, .. } => {
+            pattern.uv_mapping
+        }
+        NormalKind::Map { pattern, map } => {
+            pattern.uv_mapping || map.entries.iter().any(|(_, n)| uses_uv(n))
+        }
     }
 }
 
@@ -50,10 +58,15 @@ pub fn uses_facing(normal: &scene::Normal) -> bool {
     }
 }
 
-/// The perturbed unit normal at world point `p` for surface normal `n`; `facing` is the
-/// surface's, for the patterns that look at it (which see `n`).
-pub fn perturb(normal: &scene::Normal, p: DVec3, n: DVec3, facing: Option<&Facing>) -> DVec3 {
-    let facing = facing.map(|f| Facing { normal: n, ..*f });
+/// The perturbed unit normal at texture point `at` for surface normal `n`; the point's
+/// facing is the surface's, for the patterns that look at it (which see `n`).
+///
+/// A `uv_mapping` pattern is evaluated at (u, v, 0) and its push is added to the normal
+/// as it is in pattern space, with no turn into the surface's tangents: POV-Ray's
+/// pictures show uv-mapped bumps of a `gradient x` tilting every face towards the
+/// world's x, whichever way the face's u runs.
+pub fn perturb(normal: &scene::Normal, at: &TexturePoint, n: DVec3) -> DVec3 {
+    let facing = at.facing.map(|f| Facing { normal: n, ..f });
     let facing = facing.as_ref();
     let perturbed = match &normal.kind {
         NormalKind::Pattern {
@@ -66,20 +79,23 @@ pub fn perturb(normal: &scene::Normal, p: DVec3, n: DVec3, facing: Option<&Facin
             }
             bumped(
                 pattern,
+                normal.placement.as_deref(),
                 *bump_size,
                 slope_map.as_ref(),
                 normal.accuracy,
-                p,
+                at.for_pattern(pattern).world,
                 n,
                 facing,
             )
         }
-        NormalKind::Map { pattern, map } => mapped(pattern, map, p, n, facing),
+        NormalKind::Map { pattern, map } => mapped(pattern, map, &at.for_pattern(pattern), n),
         NormalKind::BumpMap { pattern, bump_size } => {
+            let p = at.for_pattern(pattern).world;
             let local = pattern.transform.inverse.transform_point3(p);
-            let local_normal = (into_pattern_space(pattern) * n).normalize_or_zero();
+            let placement = normal.placement.as_deref();
+            let local_normal = (into_pattern_space(pattern, placement) * n).normalize_or_zero();
             let bumped = crate::bump_map::perturb(pattern, *bump_size, local, local_normal);
-            (out_of_pattern_space(pattern) * bumped).normalize_or_zero()
+            (out_of_pattern_space(pattern, placement) * bumped).normalize_or_zero()
         }
     };
     if perturbed == DVec3::ZERO || !perturbed.is_finite() {
@@ -91,48 +107,45 @@ pub fn perturb(normal: &scene::Normal, p: DVec3, n: DVec3, facing: Option<&Facin
 
 /// A normal map: the entries either side of the pattern's value, each perturbing the
 /// normal, blended by their weights; with `average`, every entry by its share.
-fn mapped(
-    pattern: &Pattern,
-    map: &BlendMap<scene::Normal>,
-    p: DVec3,
-    n: DVec3,
-    facing: Option<&Facing>,
-) -> DVec3 {
+fn mapped(pattern: &Pattern, map: &BlendMap<scene::Normal>, at: &TexturePoint, n: DVec3) -> DVec3 {
     let entries = &map.entries;
     if entries.is_empty() {
         return n;
     }
+    let facing = at.facing.map(|f| Facing { normal: n, ..f });
+    let facing = facing.as_ref();
     // The entries are evaluated where the pattern's warps and turbulence moved the point.
-    let entries_at = pattern::entry_point(pattern, p).unwrap_or(p);
+    let entries_at = &at.for_entries(pattern);
     if matches!(pattern.kind, PatternKind::Average) {
         // Each entry perturbs its own copy of the normal; the copies are weighted, added
         // and normalized.
         return pattern::average_shares(entries)
             .fold(DVec3::ZERO, |sum, (share, entry)| {
-                sum + perturb(entry, entries_at, n, facing) * share
+                sum + perturb(entry, entries_at, n) * share
             })
             .normalize_or_zero();
     }
-    let (a, b, t) = match pattern::evaluate_on(pattern, p, facing) {
+    let (a, b, t) = match pattern::evaluate_on(pattern, at.world, facing) {
         PatternValue::Block(i) => {
             let i = i.min(entries.len() - 1);
             (i, i, 0.0)
         }
         PatternValue::Blend(v) => pattern::blend_position(entries.iter().map(|(at, _)| *at), v),
     };
-    let lower = perturb(&entries[a].1, entries_at, n, facing);
+    let lower = perturb(&entries[a].1, entries_at, n);
     if a == b || t == 0.0 {
         return lower;
     }
-    let upper = perturb(&entries[b].1, entries_at, n, facing);
+    let upper = perturb(&entries[b].1, entries_at, n);
     (lower * (1.0 - t) + upper * t).normalize_or_zero()
 }
 
 /// The matrix taking world normals into the pattern's warped space: the pattern's
 /// transform and each transformation among its warps, as POV-Ray carries normals through
-/// warps (the geometric warps leave normals alone).
-fn into_pattern_space(pattern: &Pattern) -> DMat3 {
-    let mut m = pattern.transform.matrix.matrix3.transpose();
+/// warps (the geometric warps leave normals alone). A uv-mapped normal's `placement`
+/// (the object's transformations, which do not move its pattern) turns it too.
+fn into_pattern_space(pattern: &Pattern, placement: Option<&Transform>) -> DMat3 {
+    let mut m = frame(pattern, placement).matrix.matrix3.transpose();
     for warp in pattern.warps.iter().rev() {
         if let Warp::Transform(t) = warp {
             m = t.matrix.matrix3.transpose() * m;
@@ -141,8 +154,16 @@ fn into_pattern_space(pattern: &Pattern) -> DMat3 {
     m
 }
 
-fn out_of_pattern_space(pattern: &Pattern) -> DMat3 {
-    let mut m = pattern.transform.inverse.matrix3.transpose();
+/// The transformation normals are carried through: the pattern's, then the placement.
+fn frame(pattern: &Pattern, placement: Option<&Transform>) -> Transform {
+    match placement {
+        Some(p) => pattern.transform.then(p),
+        None => pattern.transform,
+    }
+}
+
+fn out_of_pattern_space(pattern: &Pattern, placement: Option<&Transform>) -> DMat3 {
+    let mut m = frame(pattern, placement).inverse.matrix3.transpose();
     for warp in pattern.warps.iter().rev() {
         if let Warp::Transform(t) = warp {
             m *= t.inverse.matrix3.transpose();
@@ -152,8 +173,10 @@ fn out_of_pattern_space(pattern: &Pattern) -> DMat3 {
 }
 
 /// A pattern used as bumps: the push in pattern space added to the unit normal there.
+#[allow(clippy::too_many_arguments)]
 fn bumped(
     pattern: &Pattern,
+    placement: Option<&Transform>,
     bump_size: f64,
     slope_map: Option<&BlendMap<(f64, f64)>>,
     accuracy: f64,
@@ -162,7 +185,7 @@ fn bumped(
     facing: Option<&Facing>,
 ) -> DVec3 {
     let local = pattern::warped(pattern, pattern.transform.inverse.transform_point3(p));
-    let local_normal = (into_pattern_space(pattern) * n).normalize_or_zero();
+    let local_normal = (into_pattern_space(pattern, placement) * n).normalize_or_zero();
     // The bump patterns' own pushes take the point after the classic turbulence, as the
     // patterns' values do (the pyramid below gets it through the pattern's evaluation).
     let turbulent = match &pattern.turbulence {
@@ -202,7 +225,7 @@ fn bumped(
             local_normal + pyramid(pattern, slope_map, local, accuracy, facing) * amount
         }
     };
-    (out_of_pattern_space(pattern) * bumped).normalize_or_zero()
+    (out_of_pattern_space(pattern, placement) * bumped).normalize_or_zero()
 }
 
 /// `facets`: the normal turned towards the nearest random cell point of the normal itself
@@ -289,16 +312,60 @@ mod tests {
                 slope_map: None,
             },
             accuracy: 0.02,
+            placement: None,
         };
         let map = BlendMap {
             entries: vec![(1.0, bumps(0.5)), (1.0, bumps(-0.5))],
         };
         // Opposite tilts of equal weight cancel, leaving the surface normal.
         let p = DVec3::new(0.3, 0.0, 0.0);
-        let n = mapped(&Pattern::new(PatternKind::Average), &map, p, DVec3::Y, None);
+        let at = TexturePoint::in_space(p);
+        let n = mapped(&Pattern::new(PatternKind::Average), &map, &at, DVec3::Y);
         assert!((n - DVec3::Y).length() < 1e-9, "{n}");
-        let tilted = perturb(&bumps(0.5), p, DVec3::Y, None);
+        let tilted = perturb(&bumps(0.5), &at, DVec3::Y);
         assert!((tilted - DVec3::Y).length() > 1e-3);
+    }
+
+    #[test]
+    fn uv_mapped_normals_look_at_uv_and_turn_with_their_placement() {
+        let ramp = |uv_mapping: bool, placement: Option<Box<Transform>>| {
+            let mut pattern = Pattern::new(PatternKind::Gradient(DVec3::X));
+            pattern.uv_mapping = uv_mapping;
+            pattern.transform = Transform::scale(DVec3::splat(8.0)).unwrap();
+            scene::Normal {
+                kind: NormalKind::Pattern {
+                    pattern: Box::new(pattern),
+                    bump_size: 0.5,
+                    slope_map: None,
+                },
+                accuracy: 0.02,
+                placement,
+            }
+        };
+        // A point whose uv lies on the gentle ramp (x / 8 near 0.3) while its place in
+        // space sits on the ramp's jump at x = 0.
+        let at = TexturePoint {
+            uv: glam::DVec2::new(2.4, 0.0),
+            ..TexturePoint::in_space(DVec3::new(0.0, 0.5, 0.0))
+        };
+        let n = -DVec3::Z;
+        let in_space = perturb(&ramp(false, None), &at, n);
+        let on_uv = perturb(&ramp(true, None), &at, n);
+        // On the ramp the push is gentle and along x; across the jump it is steep.
+        assert!(on_uv.x.abs() > 1e-3 && on_uv.y.abs() < 1e-9, "{on_uv}");
+        assert!(
+            in_space.x.abs() > 10.0 * on_uv.x.abs(),
+            "{in_space} {on_uv}"
+        );
+        // A quarter turn about z after the texture turns the push to y, leaving the
+        // pattern (and so the push's size) where it was.
+        let quarter = Transform::rotate_degrees(DVec3::new(0.0, 0.0, 90.0));
+        let turned = perturb(&ramp(true, Some(Box::new(quarter))), &at, n);
+        assert!(
+            (turned.y.abs() - on_uv.x.abs()).abs() < 1e-9,
+            "{turned} {on_uv}"
+        );
+        assert!(turned.x.abs() < 1e-9, "{turned}");
     }
 
     #[test]

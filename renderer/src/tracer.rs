@@ -345,12 +345,7 @@ impl<'w> Tracer<'w> {
             if let Some(bumps) = &layer.normal
                 && world.quality.normals
             {
-                normal = crate::normal::perturb(
-                    bumps,
-                    layers_at.world,
-                    normal,
-                    layers_at.facing.as_ref(),
-                );
+                normal = crate::normal::perturb(bumps, layers_at, normal);
             }
             if i == 0 {
                 top_normal = normal;

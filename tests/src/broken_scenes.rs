@@ -48,7 +48,7 @@ pub const BROKEN_SCENES: &[BrokenScene] = &[
     BrokenScene {
         // Evaluates without error: the renderer refuses it when it builds the world.
         what: "a feature not drawn yet",
-        scene: "#version 3.7;\nlight_source { <0, 5, -5> rgb 1 }\nsphere { 0, 1\n  texture { uv_mapping normal { bumps 0.5 } }\n}\n",
+        scene: "#version 3.7;\nglobal_settings { photons { count 100 } }\nlight_group {\n  light_source { <0, 5, -5> rgb 1 }\n  sphere { 0, 1 }\n}\n",
         includes: &[],
     },
 ];

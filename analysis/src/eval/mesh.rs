@@ -755,6 +755,37 @@ mod tests {
     }
 
     #[test]
+    fn uv_mapped_normals_keep_the_turns_that_do_not_move_them() {
+        let scene = evaluate_ok(
+            "mesh { triangle { 0, x, y }
+               uv_mapping normal { gradient x scale 0.5 }
+               rotate 90*z translate 2*x
+             }",
+        );
+        let Texture::Plain {
+            normal: Some(normal),
+            ..
+        } = scene.objects[0].texture.as_deref().unwrap()
+        else {
+            panic!("a normal");
+        };
+        let NormalKind::Pattern { pattern, .. } = &normal.kind else {
+            panic!("a gradient");
+        };
+        // The pattern keeps only its own scale; the object's turn and move are the
+        // placement, which turns the normal's push.
+        assert_eq!(
+            pattern.transform.point(DVec3::ONE),
+            DVec3::new(0.5, 0.5, 0.5)
+        );
+        let turned = normal.placement.as_ref().unwrap().point(DVec3::X);
+        assert!(
+            (turned - DVec3::new(2.0, 1.0, 0.0)).length() < 1e-12,
+            "{turned}"
+        );
+    }
+
+    #[test]
     fn uv_mapping_comes_before_the_texture() {
         check_debug(
             "sphere { 0, 1 pigment { checker } uv_mapping }",

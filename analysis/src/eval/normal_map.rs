@@ -29,6 +29,7 @@ impl Evaluator<'_> {
                 map: BlendMap { entries },
             },
             accuracy: 0.02,
+            placement: None,
         }))
     }
 

@@ -834,6 +834,7 @@ impl Evaluator<'_> {
                         bump_size,
                     },
                     accuracy: 0.02,
+                    placement: None,
                 })
             }
             kind if pattern_keyword(kind) => {
@@ -861,6 +862,7 @@ impl Evaluator<'_> {
                                 slope_map: None,
                             },
                             accuracy: 0.02,
+                            placement: None,
                         })
                     }
                 }
@@ -1354,6 +1356,9 @@ enum Reach {
     Every,
     /// An object's transformation leaves uv-mapped patterns where they are on its surface.
     InSpace,
+    /// The transformation turns normals' pushes only, moving no pattern: an object's, for
+    /// the normals under a uv-mapped normal map.
+    Placement,
 }
 
 /// Applies a transformation written in a texture to its patterns, recursively.
@@ -1373,7 +1378,11 @@ pub(super) fn transform_pigment(pigment: &mut Pigment, t: &Transform) {
 }
 
 fn moves(pattern: &Pattern, reach: Reach) -> bool {
-    reach == Reach::Every || !pattern.uv_mapping
+    match reach {
+        Reach::Every => true,
+        Reach::InSpace => !pattern.uv_mapping,
+        Reach::Placement => false,
+    }
 }
 
 fn move_texture(texture: &mut Texture, t: &Transform, reach: Reach) {
@@ -1424,21 +1433,28 @@ fn move_pigment(pigment: &mut Pigment, t: &Transform, reach: Reach) {
 }
 
 fn move_normal(normal: &mut Normal, t: &Transform, reach: Reach) {
-    match &mut normal.kind {
+    let placed = match &mut normal.kind {
         NormalKind::Pattern { pattern, .. } | NormalKind::BumpMap { pattern, .. } => {
             if moves(pattern, reach) {
                 pattern.transform = pattern.transform.then(t);
             }
+            !moves(pattern, reach)
         }
         NormalKind::Map { pattern, map } => {
-            if !moves(pattern, reach) {
-                return;
+            let moved = moves(pattern, reach);
+            // The entries of a map left in uv space are evaluated there too.
+            let entries_reach = if moved { reach } else { Reach::Placement };
+            if moved {
+                pattern.transform = pattern.transform.then(t);
             }
-            pattern.transform = pattern.transform.then(t);
             for (_, entry) in &mut map.entries {
-                move_normal(entry, t, reach);
+                move_normal(entry, t, entries_reach);
             }
+            !moved
         }
+    };
+    if placed {
+        normal.place(t);
     }
 }
 

@@ -315,6 +315,21 @@ pub struct Normal {
     pub kind: NormalKind,
     /// The sample spacing for patterns that are not bumps by nature.
     pub accuracy: f64,
+    /// The object's transformations after a uv-mapped normal: they leave its pattern
+    /// glued to the surface but turn its push with the surface, as in POV-Ray. `None`
+    /// for none (boxed: most normals have none, and textures stay small).
+    pub placement: Option<Box<Transform>>,
+}
+
+impl Normal {
+    /// Adds the object's transformation `t` to the placement.
+    pub fn place(&mut self, t: &Transform) {
+        let placed = match &self.placement {
+            Some(p) => p.then(t),
+            None => *t,
+        };
+        self.placement = Some(Box::new(placed));
+    }
 }
 
 /// The `reflection { }` block, or the plain `reflection` colour.

@@ -613,7 +613,7 @@ impl Surface {
             if let Some(bumps) = &top.normal
                 && world.quality.normals
             {
-                n = crate::normal::perturb(bumps, layers_at.world, raw, layers_at.facing.as_ref());
+                n = crate::normal::perturb(bumps, layers_at, raw);
             }
             let colour = top.pigment.colour_at(&layers_at.with_normal(n));
             let cos = -ray.direction.dot(n);
