@@ -218,13 +218,35 @@ fn assemble(scene: &Scene, settings: BuildSettings) -> Result<(World, Vec<Target
 /// The interiors of the objects around the camera that media rays must start in: those
 /// holding media and the solid ones, which keep all media and fog out.
 fn camera_interiors(objects: &[Object], camera: DVec3) -> Vec<Arc<Interior>> {
-    objects
-        .iter()
-        .filter(|o| o.inside(camera))
-        .filter_map(|o| first_interior(o))
-        .filter(|i| !i.media.is_empty() || !i.hollow)
-        .cloned()
-        .collect()
+    let mut found = Vec::new();
+    for object in objects {
+        interiors_around(object, camera, &mut found);
+    }
+    found.retain(|i| !i.media.is_empty() || !i.hollow);
+    found
+}
+
+/// Adds the interiors of `object` that hold `point`, each once: a union's are those of
+/// its parts around the point (abyss.pov's camera is in a hollow sphere of media united
+/// with a solid submarine, and sees the media), any other object's the one its leaves
+/// share.
+fn interiors_around(object: &Object, point: DVec3, found: &mut Vec<Arc<Interior>>) {
+    if !object.inside(point) {
+        return;
+    }
+    if let Object::Csg(csg) = object
+        && matches!(csg.kind, CsgKind::Union | CsgKind::Merge)
+    {
+        for child in &csg.children {
+            interiors_around(child, point, found);
+        }
+        return;
+    }
+    if let Some(interior) = first_interior(object)
+        && !found.iter().any(|f| Arc::ptr_eq(f, interior))
+    {
+        found.push(interior.clone());
+    }
 }
 
 /// The interior an object's leaves share.

@@ -207,6 +207,17 @@ mod tests {
     }
 
     #[test]
+    fn a_camera_in_a_hollow_part_of_a_union_sees_its_media() {
+        // The union's first part is solid but far from the camera: only the glowing
+        // sphere holds it.
+        let scene = "camera { location <0, 0, -1> look_at 0 }\n\
+             union { box { 10, 11 } sphere { 0, 5 hollow pigment { rgbt 1 } \
+             interior { media { emission 0.1 } } } }";
+        let glow = centre(&world(scene), scene);
+        assert!(glow.min_element() > 0.1, "{glow}");
+    }
+
+    #[test]
     fn solid_objects_keep_media_and_fog_out() {
         // The camera inside a solid box sees neither the fog nor a hollow container's
         // glow, as in POV-Ray; made hollow, the box lets both show.
