@@ -6,6 +6,7 @@
 //! cameras and spherical map it onto angles.
 
 use crate::focal_blur::FocalBlur;
+use crate::mesh_camera::MeshRays;
 use crate::ray::Ray;
 use crate::texture_point::TexturePoint;
 use analysis::scene::{self, CameraKind};
@@ -27,6 +28,8 @@ pub struct Camera {
     pub focal_blur: Option<FocalBlur>,
     /// Bumps perturbing every ray's direction.
     normal: Option<scene::Normal>,
+    /// A mesh camera's faces.
+    mesh: Option<MeshRays>,
 }
 
 impl Camera {
@@ -36,7 +39,7 @@ impl Camera {
         }
         let (right_len, up_len) = (camera.right.length(), camera.up.length());
         let mut c = Camera {
-            kind: camera.kind,
+            kind: camera.kind.clone(),
             location: camera.location,
             direction: camera.direction,
             right: camera.right,
@@ -46,6 +49,12 @@ impl Camera {
             up_len,
             focal_blur: FocalBlur::from_scene(camera)?,
             normal: camera.normal.clone(),
+            mesh: match &camera.kind {
+                CameraKind::Mesh(mesh) => {
+                    Some(MeshRays::new(mesh, camera.location, camera.direction))
+                }
+                _ => None,
+            },
         };
         // These projections use unit vectors; the others use the vectors' lengths.
         if matches!(
@@ -60,6 +69,11 @@ impl Camera {
             c.direction = c.direction.normalize_or_zero();
         }
         Ok(c)
+    }
+
+    /// A mesh camera's faces, which give the rays pixel by pixel.
+    pub fn mesh(&self) -> Option<&MeshRays> {
+        self.mesh.as_ref()
     }
 
     /// For a perspective camera, the point every ray starts from and the matrix whose
@@ -80,7 +94,7 @@ impl Camera {
         // Image position as -0.5..0.5 across and 0.5..-0.5 down.
         let x0 = x / width - 0.5;
         let y0 = 0.5 - y / height;
-        let (origin, direction) = match self.kind {
+        let (origin, direction) = match &self.kind {
             CameraKind::Perspective => (
                 self.location,
                 self.direction + x0 * self.right + y0 * self.up,
@@ -182,6 +196,15 @@ impl Camera {
                         )
                     }
                 }
+            }
+            // The rays of the pixel that holds the position, of which this is the first.
+            CameraKind::Mesh(_) => {
+                let pixel = |p: f64, size: f64| (p.max(0.0) as u32).min(size as u32 - 1);
+                return self.mesh.as_ref()?.pixel_ray(
+                    0,
+                    (pixel(x, width), pixel(y - 1.0, height)),
+                    (width as u32, height as u32),
+                );
             }
             CameraKind::Spherical { h_angle, v_angle } => {
                 let lat = y0 * v_angle.to_radians();

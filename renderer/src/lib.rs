@@ -19,6 +19,7 @@ mod interior;
 mod light;
 mod material;
 mod media;
+mod mesh_camera;
 mod normal;
 mod object;
 mod options;

@@ -73,7 +73,9 @@ pub fn render_with_warnings(
             }),
         },
     };
-    let samples = if !options.antialias {
+    // A mesh camera gives each pixel its rays wherever in the pixel it is sampled: there is
+    // nothing for antialiasing to refine.
+    let samples = if !options.antialias || camera.mesh().is_some() {
         centres(&sampler, &region)
     } else {
         match options.aa_method {

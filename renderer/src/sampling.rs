@@ -10,6 +10,7 @@
 use crate::camera::Camera;
 use crate::colour::{Curve, EncodeTable, Sample};
 use crate::fast_math;
+use crate::mesh_camera::MeshRays;
 use crate::ray::Ray;
 use crate::tracer::{Tracer, World};
 
@@ -50,6 +51,9 @@ impl Sampler<'_> {
     /// The sample at image position `(x, y)` (pixel units from the top-left): one camera
     /// ray, or with focal blur the mean of rays through the lens from around it.
     pub fn trace(&self, tracer: &mut Tracer<'_>, x: f64, y: f64) -> Sample {
+        if let Some(mesh) = self.camera.mesh() {
+            return self.mesh_pixel(tracer, mesh, x, y);
+        }
         let Some(blur) = &self.camera.focal_blur else {
             let ray = self.camera.ray(x, y, self.width, self.height);
             return trace_camera_ray(tracer, ray);
@@ -59,6 +63,30 @@ impl Sampler<'_> {
             let pinhole = self.camera.ray(x + dx, y + dy, self.width, self.height);
             trace_camera_ray(tracer, pinhole.and_then(|r| blur.through_lens(&r, s.lens)))
         })
+    }
+
+    /// The pixel holding image position `(x, y)` through a mesh camera: the mean of its
+    /// rays that have a face. A pixel without any is left as POV-Ray
+    /// leaves it, transparent black.
+    fn mesh_pixel(&self, tracer: &mut Tracer<'_>, mesh: &MeshRays, x: f64, y: f64) -> Sample {
+        let (width, height) = (self.width as u32, self.height as u32);
+        let pixel = |p: f64, size: u32| (p.max(0.0) as u32).min(size - 1);
+        // POV-Ray 3.7 takes a pixel's faces from half a pixel above its centre, rounded
+        // towards zero (measured): the top two rows of the image show the first row of
+        // faces, and every row below the row of faces above its own.
+        let at = (pixel(x, width), pixel(y - 1.0, height));
+        let mut sum = Sample::default();
+        let mut rays = 0;
+        for r in 0..mesh.rays_per_pixel {
+            if let Some(ray) = mesh.pixel_ray(r, at, (width, height)) {
+                sum = sum + tracer.trace_primary(&ray);
+                rays += 1;
+            }
+        }
+        if rays == 0 {
+            return Sample::new(glam::DVec3::ZERO, 1.0);
+        }
+        sum * (1.0 / f64::from(rays))
     }
 
     fn differ(&self, a: Sample, b: Sample) -> bool {

@@ -3,10 +3,13 @@
 //! statement and keeps the lengths (and the handedness) of direction, right and up; then
 //! transformations move the result.
 
+use super::tokens::Token;
 use super::value::{CameraValue, Value};
 use super::{Evaluator, Result};
-use crate::scene::{Camera, CameraKind, FocalBlur};
-use glam::DVec3;
+use crate::scene::mesh::MeshGeometry;
+use crate::scene::{Camera, CameraKind, FocalBlur, MeshCamera, Shape};
+use glam::{DAffine3, DVec3};
+use std::sync::Arc;
 use syntax::SyntaxKind::*;
 
 impl Evaluator<'_> {
@@ -108,7 +111,14 @@ impl Evaluator<'_> {
                     }
                 }
                 NORMAL_KW => camera.normal = Some(self.normal_body()?),
-                BOKEH_KW | MESH_CAMERA_KW => {
+                MESH_CAMERA_KW => camera.kind = CameraKind::Mesh(Arc::new(self.mesh_camera()?)),
+                // The manual puts `smooth` after the mesh_camera block; POV-Ray's examples
+                // put it inside. Both are read.
+                SMOOTH_KW => match &mut camera.kind {
+                    CameraKind::Mesh(mesh) => Arc::make_mut(mesh).smooth = true,
+                    _ => return Err(self.error_at(&token, "smooth is for a mesh_camera")),
+                },
+                BOKEH_KW => {
                     return Err(self.unsupported(&token, &format!("camera {}", self.text(&token))));
                 }
                 kind if Self::starts_transform(kind) => {
@@ -125,6 +135,101 @@ impl Evaluator<'_> {
                     ));
                 }
             }
+        }
+    }
+
+    /// `mesh_camera { rays distribution [max_distance] mesh { M [transformations] } ...
+    /// [smooth] }`, after its keyword.
+    fn mesh_camera(&mut self) -> Result<MeshCamera> {
+        self.expect(L_BRACE, "'{'")?;
+        let rays_at = self.next()?;
+        self.unget(rays_at.clone());
+        let rays = self.int()?;
+        if rays < 1 {
+            return Err(self.error_at(
+                &rays_at,
+                format!("a mesh_camera shoots at least 1 ray per pixel, not {rays}"),
+            ));
+        }
+        self.eat(COMMA)?;
+        let distribution_at = self.next()?;
+        self.unget(distribution_at.clone());
+        let distribution = self.int()?;
+        if !(0..=3).contains(&distribution) {
+            return Err(self.error_at(
+                &distribution_at,
+                format!("the mesh_camera distribution must be 0 to 3, not {distribution}"),
+            ));
+        }
+        if distribution == 3 {
+            // POV-Ray's image positions for its uv mapping are not known well enough yet.
+            return Err(self.unsupported(&distribution_at, "mesh_camera distribution 3"));
+        }
+        self.eat(COMMA)?;
+        if self.value_follows()? {
+            let at = self.next()?;
+            self.unget(at.clone());
+            if self.float()? > 1e-10 {
+                return Err(self.unsupported(&at, "a mesh_camera's max distance"));
+            }
+        }
+        let mut camera = MeshCamera {
+            rays_per_pixel: rays as u32,
+            distribution: distribution as u8,
+            meshes: Vec::new(),
+            smooth: false,
+        };
+        loop {
+            let token = self.next()?;
+            match token.kind {
+                MESH_KW => camera.meshes.push(self.camera_mesh(&token)?),
+                SMOOTH_KW => camera.smooth = true,
+                R_BRACE if camera.meshes.is_empty() => {
+                    return Err(self.error_at(&token, "a mesh_camera needs at least one mesh"));
+                }
+                R_BRACE => break,
+                _ => {
+                    return Err(self.error_at(
+                        &token,
+                        format!(
+                            "expected mesh, smooth or '}}' in mesh_camera, found {}",
+                            self.describe(&token)
+                        ),
+                    ));
+                }
+            }
+        }
+        // The manual's limits: distribution 0 takes each ray of a pixel from its own mesh,
+        // 2 and 3 shoot one ray per pixel.
+        let meshes = camera.meshes.len();
+        if distribution == 0 && (rays as usize) > meshes {
+            return Err(self.error_at(
+                &rays_at,
+                format!(
+                    "mesh_camera distribution 0 takes each ray from its own mesh: {rays} rays per pixel need {rays} meshes, not {meshes}"
+                ),
+            ));
+        }
+        if distribution >= 2 && rays != 1 {
+            return Err(self.error_at(
+                &rays_at,
+                format!(
+                    "mesh_camera distribution {distribution} shoots 1 ray per pixel, not {rays}"
+                ),
+            ));
+        }
+        Ok(camera)
+    }
+
+    /// `mesh { M [transformations] }` in a mesh_camera: a declared mesh, placed.
+    fn camera_mesh(&mut self, keyword: &Token) -> Result<(Arc<MeshGeometry>, DAffine3)> {
+        self.expect(L_BRACE, "'{'")?;
+        let mut object = self.object_or_identifier()?;
+        self.object_modifiers(&mut object, keyword)?;
+        self.expect(R_BRACE, "'}'")?;
+        match object.shape {
+            Shape::Mesh(mesh) => Ok((mesh.geometry.clone(), object.transform.matrix)),
+            _ => Err(self.error_at(keyword, "a mesh_camera's mesh must be a mesh or mesh2")),
         }
     }
 
@@ -215,7 +320,7 @@ fn blur(camera: &mut Camera) -> &mut FocalBlur {
 mod tests {
     use crate::eval::{EvalOptions, evaluate};
     use crate::files::MemoryFiles;
-    use crate::scene::FocalBlur;
+    use crate::scene::{CameraKind, FocalBlur};
     use glam::DVec3;
 
     fn blur_of(camera: &str) -> Option<FocalBlur> {
@@ -261,5 +366,65 @@ mod tests {
     fn variance_one_keeps_the_default() {
         let blur = blur_of("aperture 1 blur_samples 9 variance 1").unwrap();
         assert_eq!(blur.variance, 1.0 / 128.0);
+    }
+    fn camera_of(camera: &str) -> Result<crate::scene::Camera, String> {
+        let text = format!(
+            "#version 3.7;\n#declare M = mesh {{ triangle {{ 0, x, y }} triangle {{ 0, y, z }} }}\ncamera {{ {camera} }}\n"
+        );
+        let files = MemoryFiles::new().with("scene.pov", text);
+        let evaluation = evaluate("scene.pov", &files, &EvalOptions::default());
+        match evaluation.diagnostics.iter().find(|d| d.is_error()) {
+            Some(error) => Err(error.message.clone()),
+            None => Ok(evaluation.scene.expect("the camera evaluates").camera),
+        }
+    }
+
+    #[test]
+    fn a_mesh_camera_keeps_its_placed_meshes() {
+        let camera =
+            camera_of("mesh_camera { 2, 1 mesh { M translate x } mesh { M } } smooth").unwrap();
+        let CameraKind::Mesh(mesh) = camera.kind else {
+            panic!("not a mesh camera: {:?}", camera.kind);
+        };
+        assert_eq!((mesh.rays_per_pixel, mesh.distribution), (2, 1));
+        assert!(mesh.smooth);
+        assert_eq!(mesh.meshes.len(), 2);
+        assert_eq!(mesh.meshes[0].0.faces.len(), 2);
+        assert_eq!(mesh.meshes[0].1.translation, DVec3::X);
+        assert_eq!(mesh.meshes[1].1.translation, DVec3::ZERO);
+    }
+
+    #[test]
+    fn mesh_camera_mistakes_are_errors() {
+        let error = |camera: &str| camera_of(camera).unwrap_err();
+        assert_eq!(
+            error("mesh_camera { 1 4 mesh { M } }"),
+            "the mesh_camera distribution must be 0 to 3, not 4"
+        );
+        assert_eq!(
+            error("mesh_camera { 2 0 mesh { M } }"),
+            "mesh_camera distribution 0 takes each ray from its own mesh: 2 rays per pixel need 2 meshes, not 1"
+        );
+        assert_eq!(
+            error("mesh_camera { 2 2 mesh { M } mesh { M } }"),
+            "mesh_camera distribution 2 shoots 1 ray per pixel, not 2"
+        );
+        assert_eq!(
+            error("mesh_camera { 1 3 mesh { M } }"),
+            "not supported yet: mesh_camera distribution 3"
+        );
+        assert_eq!(
+            error("mesh_camera { 1 0 }"),
+            "a mesh_camera needs at least one mesh"
+        );
+        assert_eq!(
+            error("mesh_camera { 1 0 mesh { sphere { 0, 1 } } }"),
+            "a mesh_camera's mesh must be a mesh or mesh2"
+        );
+        assert_eq!(error("smooth"), "smooth is for a mesh_camera");
+        assert_eq!(
+            error("mesh_camera { 1 0 10 mesh { M } }"),
+            "not supported yet: a mesh_camera's max distance"
+        );
     }
 }

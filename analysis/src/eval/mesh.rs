@@ -641,6 +641,21 @@ mod tests {
     }
 
     #[test]
+    fn a_mesh_statement_copies_a_declared_mesh() {
+        let scene = evaluate_ok(
+            "#declare M = mesh { triangle { 0, x, y } translate y }
+             mesh { M translate x pigment { rgb 1 } }",
+        );
+        let copy = mesh(&scene, 0);
+        assert_eq!(copy.geometry.faces.len(), 1);
+        assert_eq!(
+            scene.objects[0].transform.matrix.translation,
+            glam::DVec3::new(1.0, 1.0, 0.0)
+        );
+        assert!(scene.objects[0].texture.is_some());
+    }
+
+    #[test]
     fn mesh_triangles_share_corners_and_textures() {
         let scene = evaluate_ok(
             "#declare Red = texture { pigment { rgb x } }

@@ -169,7 +169,10 @@ impl Evaluator<'_> {
                 };
                 Object::new(shape, origin)
             }
-            MESH_KW => Object::new(self.mesh(&keyword)?, origin),
+            MESH_KW => match self.declared_mesh()? {
+                Some(object) => object,
+                None => Object::new(self.mesh(&keyword)?, origin),
+            },
             MESH2_KW => Object::new(self.mesh2(&keyword)?, origin),
             POLYGON_KW => Object::new(self.polygon(&keyword)?, origin),
             BICUBIC_PATCH_KW => Object::new(self.bicubic_patch(&keyword)?, origin),
@@ -240,6 +243,19 @@ impl Evaluator<'_> {
 
     /// An object statement or an object identifier: what `object { }`, `looks_like { }`,
     /// `projected_through { }` and the functions of objects take.
+    /// A declared mesh that a `mesh { M ... }` statement copies, as POV-Ray's mesh camera
+    /// examples place theirs; `None` when the statement lists its own triangles.
+    fn declared_mesh(&mut self) -> Result<Option<Object>> {
+        let token = self.next()?;
+        if let Some(Value::Object(object)) = token.slot.as_ref().map(|s| s.borrow().clone())
+            && matches!(object.shape, Shape::Mesh(_))
+        {
+            return Ok(Some(Rc::unwrap_or_clone(object)));
+        }
+        self.unget(token);
+        Ok(None)
+    }
+
     pub(super) fn object_or_identifier(&mut self) -> Result<Object> {
         self.shared_object_or_identifier().map(Rc::unwrap_or_clone)
     }
@@ -304,7 +320,7 @@ impl Evaluator<'_> {
     }
 
     /// The modifiers after a shape's parameters, up to (not including) the closing brace.
-    fn object_modifiers(&mut self, object: &mut Object, keyword: &Token) -> Result<()> {
+    pub(super) fn object_modifiers(&mut self, object: &mut Object, keyword: &Token) -> Result<()> {
         // `bounded_by { clipped_by }` and `clipped_by { bounded_by }` take the other list
         // as it stands when the object ends, whichever comes first.
         let (mut bounds_are_clips, mut clips_are_bounds) = (false, false);

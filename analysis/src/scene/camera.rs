@@ -1,8 +1,10 @@
+use super::mesh::MeshGeometry;
 use super::{Normal, Origin};
-use glam::DVec3;
+use glam::{DAffine3, DVec3};
+use std::sync::Arc;
 
 /// The projection a camera uses.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum CameraKind {
     Perspective,
     Orthographic,
@@ -16,6 +18,23 @@ pub enum CameraKind {
         h_angle: f64,
         v_angle: f64,
     },
+    /// `mesh_camera { }`: a ray from each face of meshes, pixel by pixel.
+    Mesh(Arc<MeshCamera>),
+}
+
+/// `mesh_camera { rays distribution [max_distance] mesh { } ... [smooth] }`: POV-Ray 3.7's
+/// camera whose rays leave the faces of meshes along their normals (distributions 0 to 2:
+/// one face per pixel) or from the point of a face that a pixel's uv coordinates name
+/// (distribution 3, which the renderer does not draw yet). The camera's `location` z moves each ray's origin along the normal,
+/// and a negative `direction` z turns the rays around.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeshCamera {
+    pub rays_per_pixel: u32,
+    pub distribution: u8,
+    /// The meshes, each with its transformation to the world.
+    pub meshes: Vec<(Arc<MeshGeometry>, DAffine3)>,
+    /// `smooth`: distribution 3 interpolates the normals of smooth triangles.
+    pub smooth: bool,
 }
 
 /// Focal blur: `aperture`, `blur_samples`, `focal_point`, `confidence`, `variance`. As in

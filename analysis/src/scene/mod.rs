@@ -18,7 +18,7 @@ mod texture;
 mod transform;
 
 pub use atmosphere::{Fog, GroundFog, Rainbow, SkySphere};
-pub use camera::{Camera, CameraKind, FocalBlur};
+pub use camera::{Camera, CameraKind, FocalBlur, MeshCamera};
 pub use colour::Colour;
 pub use light::{AreaLight, Light, LightGroup, LightKind};
 pub use media::{Media, Scattering, ScatteringKind};
