@@ -41,7 +41,7 @@ fn evaluate_natively(scene: &Path) -> (Duration, bool) {
     };
     let cpu_start = process_cpu_time();
     let wall_start = Instant::now();
-    let evaluation = analysis::check_with(name, &files, &options, &renderer::SceneGeometry);
+    let evaluation = analysis::evaluate_with(name, &files, &options, &renderer::SceneGeometry);
     let wall = wall_start.elapsed();
     let time = match (cpu_start, process_cpu_time()) {
         (Some(a), Some(b)) => b.saturating_sub(a),
