@@ -215,6 +215,23 @@ fn assemble(scene: &Scene, settings: BuildSettings) -> Result<(World, Vec<Target
     Ok((world, targets))
 }
 
+/// The shapes for which POV-Ray wraps uv-mapped textures around by surface coordinates of
+/// their own (the manual's "Supported Objects"), which are not drawn yet: a uv-mapped
+/// texture on them would land by the point's x and y instead, a wrong picture. Meshes and
+/// bicubic patches have theirs; on the shapes the manual does not list, x and y are taken.
+fn own_uv_coordinates(shape: &scene::Shape) -> Option<&'static str> {
+    match shape {
+        scene::Shape::Sphere { .. } => Some("sphere"),
+        scene::Shape::Box { .. } => Some("box"),
+        scene::Shape::Torus { .. } => Some("torus"),
+        scene::Shape::Lathe(_) => Some("lathe"),
+        scene::Shape::Sor(_) => Some("sor"),
+        scene::Shape::Ovus { .. } => Some("ovus"),
+        scene::Shape::Parametric(_) => Some("parametric"),
+        _ => None,
+    }
+}
+
 /// The interiors of the objects around the camera that media rays must start in: those
 /// holding media and the solid ones, which keep all media and fog out.
 fn camera_interiors(objects: &[Object], camera: DVec3) -> Vec<Arc<Interior>> {
@@ -750,6 +767,11 @@ impl Builder {
                 surface,
             });
         }
+        if material.uses_uv
+            && let Some(name) = own_uv_coordinates(&object.shape)
+        {
+            return Err(fail(format!("not supported yet: uv_mapping on a {name}")));
+        }
         let mut leaf = Leaf::new(
             shape,
             to_world,
@@ -880,6 +902,33 @@ mod tests {
         };
         let rendered = render_source("scene.pov", &files, &options).unwrap();
         rendered.image.pixel(0, 0)
+    }
+
+    #[test]
+    fn uv_mapping_on_a_shape_with_its_own_uv_coordinates_is_refused() {
+        let refusal = |object: &str| {
+            let scene = format!("#version 3.7;\n{object}\n");
+            let files = MemoryFiles::new().with("scene.pov", scene);
+            let options = RenderOptions {
+                width: 4,
+                height: 3,
+                ..RenderOptions::default()
+            };
+            render_source("scene.pov", &files, &options)
+                .err()
+                .map(|failure| failure.diagnostics[0].message.clone())
+        };
+        let checker = "texture { uv_mapping pigment { checker } }";
+        assert_eq!(
+            refusal(&format!("sphere {{ 0, 1 {checker} }}")).as_deref(),
+            Some("not supported yet: uv_mapping on a sphere")
+        );
+        assert_eq!(
+            refusal(&format!("box {{ -1, 1 {checker} }}")).as_deref(),
+            Some("not supported yet: uv_mapping on a box")
+        );
+        // A plane has no surface coordinates in the manual: x and y, as without uv_mapping.
+        assert_eq!(refusal(&format!("plane {{ y, 0 {checker} }}")), None);
     }
 
     fn assert_near(found: [f32; 4], expected: [f32; 4]) {
