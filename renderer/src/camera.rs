@@ -197,15 +197,7 @@ impl Camera {
                     }
                 }
             }
-            // The rays of the pixel that holds the position, of which this is the first.
-            CameraKind::Mesh(_) => {
-                let pixel = |p: f64, size: f64| (p.max(0.0) as u32).min(size as u32 - 1);
-                return self.mesh.as_ref()?.pixel_ray(
-                    0,
-                    (pixel(x, width), pixel(y - 1.0, height)),
-                    (width as u32, height as u32),
-                );
-            }
+            CameraKind::Mesh(_) => return self.mesh_ray(x, y, width, height),
             CameraKind::Spherical { h_angle, v_angle } => {
                 let lat = y0 * v_angle.to_radians();
                 let lon = x0 * h_angle.to_radians();
@@ -224,6 +216,19 @@ impl Camera {
         }
         (direction != DVec3::ZERO && direction.is_finite() && origin.is_finite())
             .then(|| Ray::new(origin, direction))
+    }
+
+    /// The first ray of the pixel that holds image position `(x, y)` through a mesh camera
+    /// (see [`crate::sampling::Sampler::mesh_pixel`]). Kept out of [`Self::ray`], which every
+    /// other camera's rays go through.
+    #[inline(never)]
+    fn mesh_ray(&self, x: f64, y: f64, width: f64, height: f64) -> Option<Ray> {
+        let pixel = |p: f64, size: f64| (p.max(0.0) as u32).min(size as u32 - 1);
+        self.mesh.as_ref()?.pixel_ray(
+            0,
+            (pixel(x, width), pixel(y - 1.0, height)),
+            (width as u32, height as u32),
+        )
     }
 
     /// The direction at azimuth `phi` around the view axis and `theta` away from it.

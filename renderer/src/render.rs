@@ -7,6 +7,7 @@ use crate::build::{BuildError, BuildSettings, build_world};
 use crate::camera::Camera;
 use crate::colour::{Curve, EncodeTable, Sample};
 use crate::image::Image;
+use crate::mesh_camera::MeshRays;
 use crate::options::{Extent, Gamma, RenderOptions};
 use crate::parallel::map_indices;
 use crate::radiosity;
@@ -73,9 +74,9 @@ pub fn render_with_warnings(
             }),
         },
     };
-    // A mesh camera gives each pixel its rays wherever in the pixel it is sampled: there is
-    // nothing for antialiasing to refine.
-    let samples = if !options.antialias || camera.mesh().is_some() {
+    let samples = if let Some(mesh) = camera.mesh() {
+        mesh_pixels(&sampler, mesh, &region)
+    } else if !options.antialias {
         centres(&sampler, &region)
     } else {
         match options.aa_method {
@@ -147,6 +148,18 @@ fn centres(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
         let y = f64::from(region.y0) + row as f64 + 0.5;
         (region.x0..=region.x1)
             .map(|x| sampler.trace(&mut tracer, f64::from(x) + 0.5, y))
+            .collect()
+    })
+}
+
+/// Each pixel from its rays through a mesh camera, which do not depend on where in the
+/// pixel it is sampled: there is nothing for antialiasing to refine.
+fn mesh_pixels(sampler: &Sampler<'_>, mesh: &MeshRays, region: &Region) -> Vec<Vec<Sample>> {
+    map_indices((region.y1 - region.y0 + 1) as usize, |row| {
+        let mut tracer = Tracer::new(sampler.world);
+        let y = f64::from(region.y0) + row as f64 + 0.5;
+        (region.x0..=region.x1)
+            .map(|x| sampler.mesh_pixel(&mut tracer, mesh, f64::from(x) + 0.5, y))
             .collect()
     })
 }

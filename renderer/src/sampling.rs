@@ -51,9 +51,6 @@ impl Sampler<'_> {
     /// The sample at image position `(x, y)` (pixel units from the top-left): one camera
     /// ray, or with focal blur the mean of rays through the lens from around it.
     pub fn trace(&self, tracer: &mut Tracer<'_>, x: f64, y: f64) -> Sample {
-        if let Some(mesh) = self.camera.mesh() {
-            return self.mesh_pixel(tracer, mesh, x, y);
-        }
         let Some(blur) = &self.camera.focal_blur else {
             let ray = self.camera.ray(x, y, self.width, self.height);
             return trace_camera_ray(tracer, ray);
@@ -68,7 +65,7 @@ impl Sampler<'_> {
     /// The pixel holding image position `(x, y)` through a mesh camera: the mean of its
     /// rays that have a face. A pixel without any is left as POV-Ray
     /// leaves it, transparent black.
-    fn mesh_pixel(&self, tracer: &mut Tracer<'_>, mesh: &MeshRays, x: f64, y: f64) -> Sample {
+    pub fn mesh_pixel(&self, tracer: &mut Tracer<'_>, mesh: &MeshRays, x: f64, y: f64) -> Sample {
         let (width, height) = (self.width as u32, self.height as u32);
         let pixel = |p: f64, size: u32| (p.max(0.0) as u32).min(size - 1);
         // POV-Ray 3.7 takes a pixel's faces from half a pixel above its centre, rounded
