@@ -68,16 +68,21 @@ pub fn build_world(scene: &Scene, settings: BuildSettings) -> Result<World, Buil
 /// render, but no photon is shot: `povrayst check`, the language server and the Typst
 /// plugin report these errors with the evaluator's.
 pub fn check_scene(scene: &Scene) -> Result<(), BuildError> {
-    crate::camera::Camera::from_scene(&scene.camera).map_err(|message| BuildError {
-        message,
-        origin: scene.camera.origin.clone(),
-    })?;
+    camera_of(scene)?;
     let settings = BuildSettings {
         quality: 9,
         output_alpha: false,
         max_trace_level: None,
     };
     assemble(scene, settings).map(|_| ())
+}
+
+/// The scene's camera, or why it gives no picture, located at the camera statement.
+pub(crate) fn camera_of(scene: &Scene) -> Result<crate::camera::Camera, BuildError> {
+    crate::camera::Camera::from_scene(&scene.camera).map_err(|message| BuildError {
+        message,
+        origin: scene.camera.origin.clone(),
+    })
 }
 
 /// The world of `scene` without its photon map, and the photon targets that map needs.
@@ -887,12 +892,12 @@ pub(crate) fn scene_and_world_of_source(text: &str) -> (Scene, World) {
 #[cfg(test)]
 mod tests {
     use crate::RenderOptions;
-    use crate::pipeline::render_source;
+    use crate::pipeline::{Failure, Rendered, render_source};
     use analysis::MemoryFiles;
 
-    /// The corner pixel of a 3.7 scene that has a camera and nothing else.
-    fn corner(background: &str, output_alpha: bool) -> [f32; 4] {
-        let scene = format!("#version 3.7;\ncamera {{ location -5*z look_at 0 }}\n{background}");
+    /// A 4 x 3 render of a 3.7 scene made of `items`.
+    fn render_small(items: &str, output_alpha: bool) -> Result<Rendered, Failure> {
+        let scene = format!("#version 3.7;\n{items}\n");
         let files = MemoryFiles::new().with("scene.pov", scene);
         let options = RenderOptions {
             width: 4,
@@ -900,21 +905,22 @@ mod tests {
             output_alpha,
             ..RenderOptions::default()
         };
-        let rendered = render_source("scene.pov", &files, &options).unwrap();
-        rendered.image.pixel(0, 0)
+        render_source("scene.pov", &files, &options)
+    }
+
+    /// The corner pixel of a 3.7 scene that has a camera and nothing else.
+    fn corner(background: &str, output_alpha: bool) -> [f32; 4] {
+        let scene = format!("camera {{ location -5*z look_at 0 }}\n{background}");
+        render_small(&scene, output_alpha)
+            .unwrap()
+            .image
+            .pixel(0, 0)
     }
 
     #[test]
     fn uv_mapping_on_a_shape_with_its_own_uv_coordinates_is_refused() {
         let refusal = |object: &str| {
-            let scene = format!("#version 3.7;\n{object}\n");
-            let files = MemoryFiles::new().with("scene.pov", scene);
-            let options = RenderOptions {
-                width: 4,
-                height: 3,
-                ..RenderOptions::default()
-            };
-            render_source("scene.pov", &files, &options)
+            render_small(object, false)
                 .err()
                 .map(|failure| failure.diagnostics[0].message.clone())
         };

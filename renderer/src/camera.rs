@@ -223,12 +223,10 @@ impl Camera {
     /// other camera's rays go through.
     #[inline(never)]
     fn mesh_ray(&self, x: f64, y: f64, width: f64, height: f64) -> Option<Ray> {
-        let pixel = |p: f64, size: f64| (p.max(0.0) as u32).min(size as u32 - 1);
-        self.mesh.as_ref()?.pixel_ray(
-            0,
-            (pixel(x, width), pixel(y - 1.0, height)),
-            (width as u32, height as u32),
-        )
+        let size = (width as u32, height as u32);
+        self.mesh
+            .as_ref()?
+            .pixel_ray(0, MeshRays::pixel_at(x, y, size), size)
     }
 
     /// The direction at azimuth `phi` around the view axis and `theta` away from it.

@@ -47,6 +47,15 @@ impl MeshRays {
         }
     }
 
+    /// The pixel whose faces give the rays at image position `(x, y)` of a `width` ×
+    /// `height` image. POV-Ray 3.7 takes them from half a pixel above the pixel's centre,
+    /// rounded towards zero (measured): the top two rows of the image show the first row of
+    /// faces, and every row below the row of faces above its own.
+    pub fn pixel_at(x: f64, y: f64, (width, height): (u32, u32)) -> (u32, u32) {
+        let index = |p: f64, size: u32| (p.max(0.0) as u32).min(size - 1);
+        (index(x, width), index(y - 1.0, height))
+    }
+
     /// Ray `r` of pixel `(column, row)` of a `width` × `height` image (distributions 0 to
     /// 2); `None` where there is no face for it.
     pub fn pixel_ray(

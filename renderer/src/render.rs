@@ -3,8 +3,7 @@
 //! natively, one after another on wasm32, with the same result), and encodes the colours
 //! for the output file.
 
-use crate::build::{BuildError, BuildSettings, build_world};
-use crate::camera::Camera;
+use crate::build::{BuildError, BuildSettings, build_world, camera_of};
 use crate::colour::{Curve, EncodeTable, Sample};
 use crate::image::Image;
 use crate::mesh_camera::MeshRays;
@@ -36,10 +35,7 @@ pub fn render_with_warnings(
             max_trace_level: options.max_trace_level,
         },
     )?;
-    let camera = Camera::from_scene(&scene.camera).map_err(|message| BuildError {
-        message,
-        origin: scene.camera.origin.clone(),
-    })?;
+    let camera = camera_of(scene)?;
     world.bvh.view_from(camera.eye());
     let (width, height) = (options.width.max(1), options.height.max(1));
     let region = Region::from_options(options, width, height);
@@ -334,6 +330,7 @@ impl Output {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::camera::Camera;
     use analysis::scene::{self, Colour, Finish, Light, Object, Pigment, Shape, Texture};
     use std::sync::Arc;
 

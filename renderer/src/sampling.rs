@@ -66,16 +66,12 @@ impl Sampler<'_> {
     /// rays that have a face. A pixel without any is left as POV-Ray
     /// leaves it, transparent black.
     pub fn mesh_pixel(&self, tracer: &mut Tracer<'_>, mesh: &MeshRays, x: f64, y: f64) -> Sample {
-        let (width, height) = (self.width as u32, self.height as u32);
-        let pixel = |p: f64, size: u32| (p.max(0.0) as u32).min(size - 1);
-        // POV-Ray 3.7 takes a pixel's faces from half a pixel above its centre, rounded
-        // towards zero (measured): the top two rows of the image show the first row of
-        // faces, and every row below the row of faces above its own.
-        let at = (pixel(x, width), pixel(y - 1.0, height));
+        let size = (self.width as u32, self.height as u32);
+        let at = MeshRays::pixel_at(x, y, size);
         let mut sum = Sample::default();
         let mut rays = 0;
         for r in 0..mesh.rays_per_pixel {
-            if let Some(ray) = mesh.pixel_ray(r, at, (width, height)) {
+            if let Some(ray) = mesh.pixel_ray(r, at, size) {
                 sum = sum + tracer.trace_primary(&ray);
                 rays += 1;
             }
