@@ -10,6 +10,11 @@ use crate::photons;
 use crate::ray::{Ray, RayKind};
 use glam::DVec3;
 
+/// How far media reach along a ray that meets nothing. POV-Ray samples them to this
+/// distance (its largest), measured on 3.7: atmospheric `emission 1e-11` against the
+/// background shows 0.2, and `absorption 1e-11` lets through exp(-0.2) of it.
+const MISSED_MEDIA_DEPTH: f64 = 2.0e10;
+
 impl<'w> Tracer<'w> {
     /// What a ray sees when it meets nothing: the sky sphere over the background, or the
     /// background.
@@ -32,8 +37,10 @@ impl<'w> Tracer<'w> {
 
     /// `sample`, seen along `ray` to `depth` (its parameter; infinite for a ray that met
     /// nothing) through the media of the containers the ray is in, the atmospheric media,
-    /// rainbows and fogs. Inside a solid (not hollow) object none of them shows, as in
-    /// POV-Ray, where even a solid container's own media stay dark.
+    /// rainbows and fogs. Media along a ray that met nothing are sampled to
+    /// [`MISSED_MEDIA_DEPTH`], so atmospheric media glow and dim against the background.
+    /// Inside a solid (not hollow) object none of them shows, as in POV-Ray, where even a
+    /// solid container's own media stay dark.
     ///
     /// Every medium along the stretch is lit by the lights of `light_set`: those of the
     /// object the stretch ends at (the scene's lights where it meets nothing). That is
@@ -62,7 +69,8 @@ impl<'w> Tracer<'w> {
         let has_media = atmosphere.is_some_and(|a| !a.media.is_empty())
             || self.inside.interiors().iter().any(|i| !i.media.is_empty());
         let mut passage = Passage::CLEAR;
-        if depth.is_finite() && has_media {
+        if has_media {
+            let reach = depth.min(MISSED_MEDIA_DEPTH);
             let inside = self.inside.interiors().to_vec();
             let mut splits = Vec::new();
             let scattering = inside
@@ -72,7 +80,7 @@ impl<'w> Tracer<'w> {
                 .any(|m| m.scatters());
             if scattering {
                 for light in world.light_set(light_set).filter(|l| l.media_interaction) {
-                    light.beam_crossings(&unit, (0.0, depth), &mut splits);
+                    light.beam_crossings(&unit, (0.0, reach), &mut splits);
                 }
                 splits.sort_by(f64::total_cmp);
             }
@@ -93,7 +101,7 @@ impl<'w> Tracer<'w> {
                     }
                 };
                 let seed = seed ^ (index as u64 + 1).wrapping_mul(0xd6e8_feb8_6659_fd93);
-                let p = medium.passage(&unit, (0.0, depth), &splits, seed, &mut lighting);
+                let p = medium.passage(&unit, (0.0, reach), &splits, seed, &mut lighting);
                 passage.added += passage.transmittance * p.added;
                 passage.transmittance *= p.transmittance;
             }
@@ -204,6 +212,25 @@ mod tests {
         // Red only from the box's far stretch, which ends at the box; green from the two
         // stretches that end at the ball, the second inside it (its `hollow` holds).
         assert!(lit.y > 2.0 * lit.x && lit.x > 0.0, "{lit}");
+    }
+
+    #[test]
+    fn atmospheric_media_reach_far_along_rays_that_meet_nothing() {
+        // POV-Ray 3.7 shows 0.2 for this glow against the background: 2e10 units of it.
+        let glow = "camera { location <0, 0, -5> look_at 0 } media { emission 1e-11 }";
+        let seen = centre(&world(glow), glow);
+        assert!(
+            (seen - DVec3::splat(0.2)).abs().max_element() < 1e-9,
+            "{seen}"
+        );
+        // And as much absorption lets exp(-0.2) of the background through.
+        let dim = "camera { location <0, 0, -5> look_at 0 } background { rgb 1 } \
+                   media { absorption 1e-11 }";
+        let seen = centre(&world(dim), dim);
+        assert!(
+            (seen - DVec3::splat((-0.2f64).exp())).abs().max_element() < 1e-9,
+            "{seen}"
+        );
     }
 
     #[test]
