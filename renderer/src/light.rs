@@ -15,7 +15,8 @@ pub struct Light {
     pub colour: DVec3,
     /// Fill lights: no shadows, no highlights.
     pub shadowless: bool,
-    /// Whether media scatter this light.
+    /// Whether media scatter this light: not a shadowless one, which POV-Ray 3.7's
+    /// renders show leaving media dark (`media_interaction` on or not).
     pub media_interaction: bool,
     /// Whether fog and atmospheric media dim this light on its way.
     pub media_attenuation: bool,
@@ -138,7 +139,7 @@ impl Light {
             position: light.position,
             colour: light.colour.rgb,
             shadowless: light.shadowless,
-            media_interaction: light.media_interaction,
+            media_interaction: light.media_interaction && !light.shadowless,
             media_attenuation: light.media_attenuation,
             kind,
             fade: (light.fade_power > 0.0)

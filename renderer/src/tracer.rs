@@ -485,7 +485,8 @@ impl<'w> Tracer<'w> {
             return DVec3::ZERO;
         }
         let light_colour = self.arriving(light, p, &incoming);
-        if light_colour.max_element() < 1e-10 {
+        // Negative lights darken, as in POV-Ray: only a light too weak either way is skipped.
+        if light_colour.abs().max_element() < 1e-10 {
             return DVec3::ZERO;
         }
         let lit = Lit {
@@ -745,7 +746,7 @@ impl<'w> Tracer<'w> {
                 }
                 None => inside.push(interior),
             }
-            if colour.max_element() < self.world.adc_bailout {
+            if colour.abs().max_element() < self.world.adc_bailout {
                 return DVec3::ZERO;
             }
             origin = point;
@@ -1131,5 +1132,28 @@ mod tests {
             }
         }
         assert!(tracer.shades_plainly() && plain > 600, "{plain} plain hits");
+    }
+
+    /// A negative light takes its share away, through a clear pane too, as in POV-Ray:
+    /// with half as much negative light the ball shows half its light.
+    #[test]
+    fn negative_lights_darken() {
+        let scene = |negative: &str| {
+            format!(
+                "camera {{ location <0, 0, -5> look_at 0 }}\n\
+                 light_source {{ <0, 0, -10> rgb 1 }}\n{negative}\n\
+                 box {{ <-3, -3, -3>, <3, 3, -2.9> pigment {{ rgbt 1 }} }}\n\
+                 sphere {{ 0, 1 pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 1 }} }}"
+            )
+        };
+        let plain = scene("");
+        let full = centre(&crate::build::world_of_source(&plain), &plain);
+        let dimmed = scene("light_source { <0, 0, -10> rgb -0.5 }");
+        let half = centre(&crate::build::world_of_source(&dimmed), &dimmed);
+        assert!(full.x > 0.5, "{full}");
+        assert!(
+            (half - full * 0.5).abs().max_element() < 1e-9,
+            "{half} {full}"
+        );
     }
 }

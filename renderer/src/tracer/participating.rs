@@ -117,7 +117,8 @@ impl<'w> Tracer<'w> {
     }
 
     /// The light of every light source of `light_set` that interacts with media arriving
-    /// at `p`, a media sample inside the containers `inside`, after shadows.
+    /// at `p`, a media sample inside the containers `inside`, after shadows (none of
+    /// them is shadowless: those leave media dark).
     fn media_lights(
         &mut self,
         p: DVec3,
@@ -131,7 +132,7 @@ impl<'w> Tracer<'w> {
                 continue;
             };
             let mut colour = incoming.colour;
-            if !light.shadowless && world.quality.shadows {
+            if world.quality.shadows {
                 self.shadow_start.extend_from_slice(inside);
                 // As at surfaces, refracting photon targets stop the light (in `shadowed`);
                 // without photons in media nothing brings it back there, as in POV-Ray.
@@ -195,8 +196,8 @@ mod tests {
         let scene = |ball: &str| {
             format!(
                 "camera {{ location <0, 0, -5> look_at 0 }}\n\
-                 light_source {{ <-5, 3, -5> rgb <1, 0, 0> shadowless }}\n\
-                 light_group {{ light_source {{ <5, 3, -5> rgb <0, 1, 0> shadowless }}\n\
+                 light_source {{ <-5, 3, -5> rgb <1, 0, 0> }}\n\
+                 light_group {{ light_source {{ <5, 3, -5> rgb <0, 1, 0> }}\n\
                  sphere {{ 0, 1 hollow pigment {{ rgbt 1 }} {ball} }} }}"
             )
         };
@@ -231,6 +232,24 @@ mod tests {
             (seen - DVec3::splat((-0.2f64).exp())).abs().max_element() < 1e-9,
             "{seen}"
         );
+    }
+
+    #[test]
+    fn shadowless_lights_leave_media_dark() {
+        // POV-Ray 3.7 scatters none of a shadowless light in media (measured: a box of
+        // scattering media under a shadowless light stays black), though surfaces see it.
+        let scene = |shadowless: &str| {
+            format!(
+                "camera {{ location <0, 0, -5> look_at 0 }}\n\
+                 light_source {{ <-3, 0, -3> rgb 1 {shadowless} }}\n\
+                 box {{ -2, 2 hollow pigment {{ rgbt 1 }} \
+                 interior {{ media {{ scattering {{ 1, 0.1 }} }} }} }}"
+            )
+        };
+        let lit = scene("");
+        assert!(centre(&world(&lit), &lit).x > 0.05);
+        let fill = scene("shadowless");
+        assert_eq!(centre(&world(&fill), &fill), DVec3::ZERO);
     }
 
     #[test]
