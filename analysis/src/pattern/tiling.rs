@@ -6,20 +6,33 @@
 //! `(a + b√2)/4`, `(a + b√3)/4` or `(a + b√3)/12`, and so reproduces POV-Ray's values to
 //! 1e-5. Here a period's tiles are placed so that every point of one period cell finds its
 //! tile among a short list: the cell is cut into a grid, and each grid square lists the
-//! few tiles that reach into it.
+//! few tiles that reach into it. Tilings 26 and 27 are Penrose's kites and darts and his
+//! rhombs, aperiodic: they are built by their own rules in `penrose`. Tiling 25, Penrose's
+//! pentagons, stars, boats and diamonds, is not supported yet.
+
+mod penrose;
 
 use super::floor;
 use glam::{DVec2, DVec3};
+use penrose::Penrose;
 use std::ops::Range;
 use std::sync::OnceLock;
 
-/// How many tilings `tilings.txt` holds: of POV-Ray's 1 to 27, 1 to 24 are
-/// implemented.
+/// How many tilings `tilings.txt` holds: POV-Ray's periodic tilings, 1 to 24.
 const TILINGS: usize = 24;
+
+/// The Penrose tiling that POV-Ray's tiling `number` is, if it is one we draw.
+fn penrose(number: u8) -> Option<Penrose> {
+    match number {
+        26 => Some(Penrose::KitesAndDarts),
+        27 => Some(Penrose::Rhombs),
+        _ => None,
+    }
+}
 
 /// Whether POV-Ray's tiling `number` is implemented.
 pub fn supported(number: u8) -> bool {
-    (1..=TILINGS).contains(&usize::from(number))
+    (1..=TILINGS).contains(&usize::from(number)) || penrose(number).is_some()
 }
 
 /// An edge's line scaled by its ramp width: the ramp is `normal . p - offset`, 0 on the
@@ -142,6 +155,9 @@ fn layouts(text: &str) -> Vec<Layout> {
 /// The value of `tiling number` at `p` (y is ignored), in 0..=1. `number` must be
 /// `supported`.
 pub fn value(number: u8, p: DVec3) -> f64 {
+    if let Some(penrose) = penrose(number) {
+        return penrose::value(penrose, p);
+    }
     let tiling = tiling(number);
     let q = DVec2::new(p.x, p.z);
     let (u, v) = (tiling.dual_a.dot(q), tiling.dual_b.dot(q));
