@@ -7,8 +7,19 @@
 //! 1e-5. Here a period's tiles are placed so that every point of one period cell finds its
 //! tile among a short list: the cell is cut into a grid, and each grid square lists the
 //! few tiles that reach into it. Tilings 26 and 27 are Penrose's kites and darts and his
-//! rhombs, aperiodic: they are built by their own rules in `penrose`. Tiling 25, Penrose's
-//! pentagons, stars, boats and diamonds, is not supported yet.
+//! rhombs, aperiodic: they are built by their own rules in `penrose`.
+//!
+//! Tiling 25, Penrose's first tiling (pentagons of three types 0, 1 and 2, stars 3, boats 4
+//! and diamonds 5), is not supported yet. What POV-Ray's values show of it: pentagons of
+//! edge 1, one of type 0 centred on the origin with corners towards 36° + k 72°, five-fold
+//! symmetric round it, bevels about 0.29 wide; it is its own substitution scaled by φ² and
+//! turned by 36° (a pentagon's children: a turned pentagon at its centre, five at its
+//! corners, half diamonds or the points of stars and boats at its edges). It is no
+//! regrouping of the Robinson triangles of `penrose`: the corners of its central pentagon,
+//! 0.85 from the origin, are no corners of theirs at any scale φ^k. Its pentagons of types
+//! 1 and 2 carry a direction that their children show but their shape does not, and tiles
+//! lie astride two parents, so its substitution needs that direction and those shared
+//! tiles worked out for every tile type before a point can find its tile.
 
 mod penrose;
 
