@@ -92,32 +92,48 @@ fn metric_root(sum: f64, metric: f64) -> f64 {
 /// nearest nucleus itself.
 fn nearest_three(p: DVec3, metric: f64) -> ([f64; 3], DVec3) {
     let centre = cube_of(p - DVec3::splat(1e-10));
+    let low = centre.as_dvec3();
     let mut best = [f64::INFINITY; 3];
     let mut nearest = DVec3::ZERO;
-    let mut nearest_place = usize::MAX;
-    // The cubes are searched nearest first, and a cube no part of which is nearer than
-    // the third nearest nucleus found so far holds no nucleus that changes the answer: its
-    // nucleus is not worked out. Of equally near nuclei the one first in the neighbourhood
-    // is the nearest, as when every cube was searched in its order, so the answer is the
-    // same to the bit. (The bound holds for the metrics whose sums only grow with each
+    let mut nearest_place = u8::MAX;
+    // A cube no part of which is nearer than the third nearest nucleus found so far holds
+    // no nucleus that changes the answer: its nucleus is not worked out. Of equally near
+    // nuclei the one first in the neighbourhood is the nearest, as when every cube was
+    // searched in its order, so the answer is the same to the bit whatever the order of
+    // the search. (The bound holds for the metrics whose sums only grow with each
     // coordinate's distance in floating point too, not for the others' powers.)
     let bounded = metric == 2.0 || metric == 1.0;
-    for &(offset, place) in search_order() {
-        let cube = centre + offset;
-        if bounded && metric_sum(distance_to_cube(p, cube), metric) > best[2] {
+    let gaps = if bounded {
+        axis_gaps(p, low, metric)
+    } else {
+        [[0.0; 5]; 3]
+    };
+    // The cubes are searched in the order of the least distance any point of `p`'s
+    // eighth of the centre cube can have from them, so that in the Euclidean metric the
+    // search ends at the first cube that even that distance rules out. Far from the
+    // origin, where the centre cube is clamped, the order is kept but not the early end.
+    let upper = |axis: usize| usize::from(p[axis] >= low[axis] + 0.5);
+    let octant = upper(0) | upper(1) << 1 | upper(2) << 2;
+    let ends_early = metric == 2.0 && p.abs().max_element() < 1e8;
+    for step in &search_orders()[octant] {
+        if ends_early && step.least_sum > best[2] {
+            break;
+        }
+        let [gx, gy, gz] = step.gap;
+        if bounded && gaps[0][gx] + gaps[1][gy] + gaps[2][gz] > best[2] {
             continue;
         }
-        let n = nucleus(cube);
+        let n = nucleus(centre + step.offset);
         let sum = metric_sum(n - p, metric);
         if sum < best[0] {
             best = [sum, best[0], best[1]];
             nearest = n;
-            nearest_place = place;
+            nearest_place = step.place;
             continue;
         }
-        if sum == best[0] && place < nearest_place {
+        if sum == best[0] && step.place < nearest_place {
             nearest = n;
-            nearest_place = place;
+            nearest_place = step.place;
         }
         if sum < best[1] {
             best = [best[0], sum, best[1]];
@@ -128,24 +144,74 @@ fn nearest_three(p: DVec3, metric: f64) -> ([f64; 3], DVec3) {
     (best, nearest)
 }
 
-/// The cubes of [`neighbourhood`] nearest to the centre first, each with its place there.
-fn search_order() -> &'static [(IVec3, usize); 81] {
-    static ORDER: std::sync::OnceLock<[(IVec3, usize); 81]> = std::sync::OnceLock::new();
-    ORDER.get_or_init(|| {
-        let mut order = [(IVec3::ZERO, 0); 81];
-        for (place, offset) in neighbourhood().iter().enumerate() {
-            order[place] = (*offset, place);
+/// For each axis and each of the five offsets -2..=2 along it, how far `p` lies from the
+/// slab of cubes there, as it enters the metric's sum (squared for the Euclidean metric):
+/// the terms of the metric sum of `p`'s distance to a cube, computed as for one cube so
+/// that their sum is the same to the bit.
+fn axis_gaps(p: DVec3, low: DVec3, metric: f64) -> [[f64; 5]; 3] {
+    let mut gaps = [[0.0; 5]; 3];
+    for (axis, gaps) in gaps.iter_mut().enumerate() {
+        for (i, gap) in gaps.iter_mut().enumerate() {
+            let start = low[axis] + (i as f64 - 2.0);
+            let before = start - p[axis];
+            let after = p[axis] - (start + 1.0);
+            let below = if 0.0 > before { 0.0 } else { before };
+            let d = if below > after { below } else { after };
+            *gap = if metric == 2.0 { d * d } else { d.abs() };
         }
-        order.sort_by_key(|(offset, _)| offset.length_squared());
-        order
+    }
+    gaps
+}
+
+/// One cube of a search: its offset from the centre cube, its place in [`neighbourhood`],
+/// the indices of its offsets in [`axis_gaps`], and the least squared distance it can have
+/// from a point in the eighth of the centre cube the search is for.
+struct SearchStep {
+    offset: IVec3,
+    place: u8,
+    gap: [usize; 3],
+    least_sum: f64,
+}
+
+/// The cubes of [`neighbourhood`] for a point in each eighth of the centre cube (bit 0 set
+/// for the upper half in x, bit 1 in y, bit 2 in z), by the least distance a point there
+/// can have from them.
+fn search_orders() -> &'static [Vec<SearchStep>; 8] {
+    static ORDERS: std::sync::OnceLock<[Vec<SearchStep>; 8]> = std::sync::OnceLock::new();
+    ORDERS.get_or_init(|| {
+        std::array::from_fn(|octant| {
+            let mut order: Vec<SearchStep> = neighbourhood()
+                .iter()
+                .enumerate()
+                .map(|(place, &offset)| {
+                    let least =
+                        |axis: usize| least_gap(offset[axis], octant >> axis & 1 == 1).powi(2);
+                    SearchStep {
+                        offset,
+                        place: place as u8,
+                        gap: [0, 1, 2].map(|axis| (offset[axis] + 2) as usize),
+                        least_sum: least(0) + least(1) + least(2),
+                    }
+                })
+                .collect();
+            order.sort_by(|a, b| a.least_sum.total_cmp(&b.least_sum));
+            order
+        })
     })
 }
 
-/// How far `p` lies from the unit cube `cube` along each axis: a lower bound on each
-/// coordinate of the distance to any point of the cube, its nucleus included.
-fn distance_to_cube(p: DVec3, cube: IVec3) -> DVec3 {
-    let low = cube.as_dvec3();
-    DVec3::ZERO.max(low - p).max(p - (low + 1.0))
+/// The least distance along one axis from a point of the centre cube's lower or upper half
+/// to the cubes `offset` steps away. The point lies in the centre cube or (the cube is
+/// found 1e-10 below the point) up to 1e-10 past its upper face, and rounding never takes
+/// a difference below a bound it exceeds exactly, so these hold in floating point.
+fn least_gap(offset: i32, upper: bool) -> f64 {
+    match (offset, upper) {
+        (0, _) | (1, true) | (-1, false) => 0.0,
+        (1, false) | (-1, true) => 0.5,
+        (2, true) => 1.0 - 1e-9,
+        (-2, false) => 1.0,
+        _ => 1.5,
+    }
 }
 
 /// The nucleus nearest to `p` in the metric.
@@ -212,9 +278,22 @@ mod tests {
         // Points in cubes of all octants, near their faces and far from the origin, in
         // the metrics that skip cubes and one that does not.
         for metric in [2.0, 1.0, 3.0] {
-            for i in 0..3000 {
+            // Also points on cube faces and half-way planes, where the search order
+            // changes, and points beyond 1e8, where the search does not end early.
+            let on_planes = (0..512).map(|i| {
                 let f = i as f64;
-                let p = DVec3::new(f * 0.731 - 1100.0, (f * 0.377).sin() * 40.0, f * 1e-3 - 0.5);
+                DVec3::new(
+                    (i % 8) as f64 * 0.5 - 2.0,
+                    (i / 8 % 8) as f64 * 0.25,
+                    f * 0.5 - 128.0,
+                )
+            });
+            let far = (0..64).map(|i| DVec3::new(1e8 + i as f64 * 0.37, -2e9, i as f64 * 3.1));
+            let scattered = (0..3000).map(|i| {
+                let f = i as f64;
+                DVec3::new(f * 0.731 - 1100.0, (f * 0.377).sin() * 40.0, f * 1e-3 - 0.5)
+            });
+            for p in scattered.chain(on_planes).chain(far) {
                 // Every cube's nucleus, nearest first; of equally near ones, the first
                 // visited.
                 let centre = cube_of(p - DVec3::splat(1e-10));
