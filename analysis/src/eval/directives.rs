@@ -2,9 +2,10 @@
 //! They run inside the token getter, so they may stand between any two tokens of a scene.
 
 use super::expr::EPSILON;
+use super::expr_cache::Level;
 use super::stream::SkipStop;
 use super::symbols::Symbol;
-use super::tokens::{Cond, Frame, FrameKind, Token};
+use super::tokens::{Cond, FileId, Frame, FrameKind, Token};
 use super::value::{Array, Value};
 use super::{Evaluator, Message, Result, Stream};
 use std::rc::Rc;
@@ -149,6 +150,11 @@ impl Evaluator<'_> {
         // found, when the declaration needs it.
         let frame = self.frames.last().expect("the main frame is never popped");
         let name_at = (frame.file, frame.pos - 1);
+        if self.raw_lookahead(0).is_some_and(|t| t.kind == EQ)
+            && self.replayed_declaration(local, name_at).is_some()
+        {
+            return Ok(());
+        }
         let mut indices = Vec::new();
         let mut key = None;
         loop {
@@ -243,6 +249,47 @@ impl Evaluator<'_> {
                 ));
         }
         Ok(())
+    }
+
+    /// `NAME = VALUE;` after `#declare` or `#local`, where the value is an expression that
+    /// an earlier run of this place compiled, ending at the `;`: assigned at once, with the
+    /// same effects as reading it token by token (a new `#local` is created before its
+    /// value is read, a vector led by a colour identifier stays a colour). `None` when it
+    /// must be read token by token; only that first effect, which the reading repeats
+    /// harmlessly, has happened then.
+    fn replayed_declaration(&mut self, local: bool, name_at: (FileId, usize)) -> Option<()> {
+        let scope = self.scopes.len() - 1;
+        let symbol = self.symbol_at(name_at.0, name_at.1);
+        if local && !self.scopes[scope].contains_key(&symbol) {
+            self.declare_local_symbol_in(scope, symbol, Value::Uninitialized);
+        }
+        let frame = self.frames.last_mut()?;
+        frame.pos += 1;
+        let (file, first) = (frame.file, frame.pos);
+        let Some(value) = self.replayed_up_to(Level::Additive, SEMICOLON, 1) else {
+            self.frames.last_mut()?.pos -= 1;
+            return None;
+        };
+        let value = match value {
+            Value::Vector(terms) if self.files[file as usize].tokens[first].kind == IDENT => {
+                let leader = self.symbol_at(file, first);
+                let colour = self
+                    .lookup_symbol(leader)
+                    .is_some_and(|slot| matches!(&*slot.borrow(), Value::Colour(_)));
+                if colour {
+                    Value::colour(terms)
+                } else {
+                    Value::Vector(terms)
+                }
+            }
+            other => other,
+        };
+        if local {
+            self.declare_local_symbol_in(scope, symbol, value);
+        } else {
+            self.declare_symbol_in(scope, symbol, value);
+        }
+        Some(())
     }
 
     fn assign_element(

@@ -153,6 +153,44 @@ impl Evaluator<'_> {
         Some(value)
     }
 
+    /// The value of the expression of grammar `level` that starts where the token getter
+    /// stands (nothing given back), when an earlier evaluation of its place compiled it
+    /// and the token after it is `closing`: replayed, with the reading position moved past
+    /// `closing` and the steps of `extra` tokens read before the expression counted too,
+    /// as if all were read. `None`, with nothing done, otherwise. Unlike [`Self::replayed`]
+    /// this never compiles: a statement that uses it reads its first run token by token.
+    pub(super) fn replayed_up_to(
+        &mut self,
+        level: Level,
+        closing: SyntaxKind,
+        extra: u64,
+    ) -> Option<Value> {
+        if !self.pushed.is_empty() {
+            return None;
+        }
+        let frame = self.frames.last()?;
+        let start = frame.pos;
+        let states = self.expr_cache.states.get(frame.file as usize)?;
+        let state = *states.get(2 * start + level as usize)?;
+        if state < FIRST_COMPILED {
+            return None;
+        }
+        let compiled = &self.expr_cache.compiled[(state - FIRST_COMPILED) as usize];
+        let end = compiled.end;
+        let tokens = &self.files[frame.file as usize].tokens;
+        if end >= frame.end || tokens[end].kind != closing {
+            return None;
+        }
+        let steps = (end + 1 - start) as u64 + extra;
+        if self.steps + steps >= self.options.budgets.steps {
+            return None;
+        }
+        let value = self.replay(&compiled.node)?;
+        self.steps += steps;
+        self.frames.last_mut()?.pos = end + 1;
+        Some(value)
+    }
+
     fn compile(&self, file: FileId, start: usize, level: Level) -> Option<Compiled> {
         let source = &self.files[file as usize];
         let mut compiler = Compiler {
@@ -485,6 +523,36 @@ mod tests {
                 -18.000 2.0,6.0,1.0 0.100,0.200,0.300,0.000,0.000
                 -7.500 4.0,8.0,-1.0 1.200,1.400,1.600,1.000,1.000
                 -3.500 6.0,10.0,-3.0 0.300,0.600,0.900,0.000,0.000
+            "#]],
+        );
+    }
+
+    #[test]
+    fn replayed_declarations_assign_as_declarations_read_token_by_token() {
+        // Output of POV-Ray 3.7: `#declare` in a macro writes the global, `#local` shadows
+        // it, a colour stays a colour.
+        check_debug(
+            r#"#version 3.7;
+#declare C = rgb <0.1, 0.2, 0.3>;
+#declare G = 0;
+#declare N = 7;
+#macro Step(I)
+  #declare G = G + I;
+  #local N = I * 2;
+  #local L = C;
+  #local L = L * N + <I, 0, 1>;
+  L
+#end
+#for (I, 1, 4)
+  #local K = Step(I);
+  #debug concat(str(G, 0, 0), " ", str(N, 0, 0), " ", vstr(5, K, ",", 0, 2), "\n")
+#end
+"#,
+            expect![[r#"
+                1 7 1.20,0.40,1.60,0.00,0.00
+                3 7 2.40,0.80,2.20,0.00,0.00
+                6 7 3.60,1.20,2.80,0.00,0.00
+                10 7 4.80,1.60,3.40,0.00,0.00
             "#]],
         );
     }
