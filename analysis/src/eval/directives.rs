@@ -9,7 +9,7 @@ use super::tokens::{Cond, FileId, Frame, FrameKind, Token};
 use super::value::{Array, Value};
 use super::{Evaluator, Message, Result, Stream};
 use std::rc::Rc;
-use syntax::SyntaxKind::*;
+use syntax::SyntaxKind::{self, *};
 
 impl Evaluator<'_> {
     /// Runs the directive whose `#` was just read.
@@ -254,42 +254,50 @@ impl Evaluator<'_> {
     /// `NAME = VALUE;` after `#declare` or `#local`, where the value is an expression that
     /// an earlier run of this place compiled, ending at the `;`: assigned at once, with the
     /// same effects as reading it token by token (a new `#local` is created before its
-    /// value is read, a vector led by a colour identifier stays a colour). `None` when it
-    /// must be read token by token; only that first effect, which the reading repeats
-    /// harmlessly, has happened then.
+    /// value is read). `None` when it must be read token by token; only that first effect,
+    /// which the reading repeats harmlessly, has happened then.
     fn replayed_declaration(&mut self, local: bool, name_at: (FileId, usize)) -> Option<()> {
         let scope = self.scopes.len() - 1;
         let symbol = self.symbol_at(name_at.0, name_at.1);
         if local && !self.scopes[scope].contains_key(&symbol) {
             self.declare_local_symbol_in(scope, symbol, Value::Uninitialized);
         }
-        let frame = self.frames.last_mut()?;
-        frame.pos += 1;
-        let (file, first) = (frame.file, frame.pos);
-        let Some(value) = self.replayed_up_to(Level::Additive, SEMICOLON, 1) else {
+        self.frames.last_mut()?.pos += 1;
+        // The '=' and the ';' count as steps too.
+        let Some(value) = self.replayed_rvalue(&[SEMICOLON], 2) else {
             self.frames.last_mut()?.pos -= 1;
             return None;
         };
-        let value = match value {
-            Value::Vector(terms) if self.files[file as usize].tokens[first].kind == IDENT => {
-                let leader = self.symbol_at(file, first);
-                let colour = self
-                    .lookup_symbol(leader)
-                    .is_some_and(|slot| matches!(&*slot.borrow(), Value::Colour(_)));
-                if colour {
-                    Value::colour(terms)
-                } else {
-                    Value::Vector(terms)
-                }
-            }
-            other => other,
-        };
+        self.frames.last_mut()?.pos += 1;
         if local {
             self.declare_local_symbol_in(scope, symbol, value);
         } else {
             self.declare_symbol_in(scope, symbol, value);
         }
         Some(())
+    }
+
+    /// A value as [`Self::rvalue`] reads it, when it is an expression that an earlier run
+    /// of its place compiled and one of `closing` follows it: replayed, with the reading
+    /// position moved to that token (see [`Self::replayed_before`] for `extra`). As when
+    /// read token by token, a vector led by a colour identifier is a colour.
+    pub(super) fn replayed_rvalue(&mut self, closing: &[SyntaxKind], extra: u64) -> Option<Value> {
+        let frame = self.frames.last()?;
+        let (file, first) = (frame.file, frame.pos);
+        match self.replayed_before(Level::Additive, closing, extra, Some)? {
+            Value::Vector(terms) if self.files[file as usize].tokens[first].kind == IDENT => {
+                let leader = self.symbol_at(file, first);
+                let colour = self
+                    .lookup_symbol(leader)
+                    .is_some_and(|slot| matches!(&*slot.borrow(), Value::Colour(_)));
+                Some(if colour {
+                    Value::colour(terms)
+                } else {
+                    Value::Vector(terms)
+                })
+            }
+            other => Some(other),
+        }
     }
 
     fn assign_element(

@@ -144,6 +144,10 @@ impl Evaluator<'_> {
     /// A parenthesised condition, as `#if (...)` and `#while (...)` take.
     pub fn condition(&mut self) -> Result<bool> {
         self.expect(L_PAREN, "'('")?;
+        if let Some(v) = self.replayed_float(&[R_PAREN]) {
+            self.expect(R_PAREN, "')'")?;
+            return Ok(is_true(v));
+        }
         let first = self.next()?;
         self.unget(first.clone());
         let value = self.full_expression()?;
@@ -564,10 +568,22 @@ impl Evaluator<'_> {
 
     /// A float argument inside a call's parentheses, where the full grammar applies.
     pub fn float_in_parens(&mut self) -> Result<f64> {
+        if let Some(v) = self.replayed_float(&[COMMA, R_PAREN]) {
+            return Ok(v);
+        }
         let first = self.next()?;
         self.unget(first.clone());
         let value = self.full_expression()?;
         self.to_float(&first, value)
+    }
+
+    /// A float inside parentheses (the full grammar) followed by one of `closing`, when an
+    /// earlier run of its place compiled it: replayed, up to that token.
+    fn replayed_float(&mut self, closing: &[SyntaxKind]) -> Option<f64> {
+        self.replayed_before(Level::Full, closing, 0, |value| match value {
+            Value::Float(v) => Some(v),
+            _ => None,
+        })
     }
 
     /// Any value inside a call's parentheses.
@@ -577,6 +593,15 @@ impl Evaluator<'_> {
 
     /// A vector argument inside parentheses, promoted to 3 components.
     pub fn vector_in_parens(&mut self) -> Result<glam::DVec3> {
+        let replayed =
+            self.replayed_before(Level::Full, &[COMMA, R_PAREN], 0, |value| match value {
+                Value::Float(v) => Some(glam::DVec3::splat(v)),
+                Value::Vector(t) | Value::Colour(t) => Some(t.promoted(3).vec3()),
+                _ => None,
+            });
+        if let Some(v) = replayed {
+            return Ok(v);
+        }
         let first = self.next()?;
         self.unget(first.clone());
         match self.full_expression()? {
@@ -632,6 +657,10 @@ pub(super) fn combined(
     left: Value,
     right: Value,
 ) -> std::result::Result<Value, String> {
+    // Two floats, the commonest case, give what the general rule below gives for them.
+    if let (Value::Float(a), Value::Float(b)) = (&left, &right) {
+        return Ok(Value::Float(bin.apply(*a, *b)));
+    }
     if let (BinOp::Add, Value::String(_), Value::String(_)) = (bin, &left, &right) {
         return Err("strings are joined with concat(), not '+'".into());
     }

@@ -154,17 +154,19 @@ impl Evaluator<'_> {
     }
 
     /// The value of the expression of grammar `level` that starts where the token getter
-    /// stands (nothing given back), when an earlier evaluation of its place compiled it
-    /// and the token after it is `closing`: replayed, with the reading position moved past
-    /// `closing` and the steps of `extra` tokens read before the expression counted too,
-    /// as if all were read. `None`, with nothing done, otherwise. Unlike [`Self::replayed`]
-    /// this never compiles: a statement that uses it reads its first run token by token.
-    pub(super) fn replayed_up_to(
+    /// stands (nothing given back), when an earlier evaluation of its place compiled it,
+    /// the token after it is one of `closing` and `accept` takes the value: replayed, with
+    /// the reading position moved to that token and the steps of the expression's tokens
+    /// and of `extra` more counted, as if all were read. `None`, with nothing done,
+    /// otherwise. Unlike [`Self::replayed`] this never compiles: a statement that uses it
+    /// reads its first run token by token.
+    pub(super) fn replayed_before<T>(
         &mut self,
         level: Level,
-        closing: SyntaxKind,
+        closing: &[SyntaxKind],
         extra: u64,
-    ) -> Option<Value> {
+        accept: impl FnOnce(Value) -> Option<T>,
+    ) -> Option<T> {
         if !self.pushed.is_empty() {
             return None;
         }
@@ -178,16 +180,16 @@ impl Evaluator<'_> {
         let compiled = &self.expr_cache.compiled[(state - FIRST_COMPILED) as usize];
         let end = compiled.end;
         let tokens = &self.files[frame.file as usize].tokens;
-        if end >= frame.end || tokens[end].kind != closing {
+        if end >= frame.end || !closing.contains(&tokens[end].kind) {
             return None;
         }
-        let steps = (end + 1 - start) as u64 + extra;
+        let steps = (end - start) as u64 + extra;
         if self.steps + steps >= self.options.budgets.steps {
             return None;
         }
-        let value = self.replay(&compiled.node)?;
+        let value = accept(self.replay(&compiled.node)?)?;
         self.steps += steps;
-        self.frames.last_mut()?.pos = end + 1;
+        self.frames.last_mut()?.pos = end;
         Some(value)
     }
 
@@ -553,6 +555,41 @@ mod tests {
                 3 7 2.40,0.80,2.20,0.00,0.00
                 6 7 3.60,1.20,2.80,0.00,0.00
                 10 7 4.80,1.60,3.40,0.00,0.00
+            "#]],
+        );
+    }
+
+    #[test]
+    fn replayed_conditions_arguments_and_cases_take_the_branches_read_token_by_token() {
+        // Output of POV-Ray 3.7.
+        check_debug(
+            r#"#version 3.7;
+#declare V = <1, 2, 3>;
+#declare F = function(a, b, c) { a * 10 + b - c }
+#macro M(A, B) (A + B.y) #end
+#for (I, 0, 5)
+  #if (I > 1 & I < 4)
+    #debug "in "
+  #end
+  #switch (I * 2)
+    #case (4)
+      #debug "four "
+    #break
+    #range (6, 8)
+      #debug "six-eight "
+    #break
+  #end
+  #local W = vcross(V, <I, 1, 0>);
+  #debug concat(str(F(I, I / 2, 1), 0, 1), " ", str(M(I * 2, V + I), 0, 0), " ", vstr(3, W, ",", 0, 0), "\n")
+#end
+"#,
+            expect![[r#"
+                -1.0 2 -3,0,1
+                9.5 5 -3,3,-1
+                in four 20.0 8 -3,6,-3
+                in six-eight 30.5 11 -3,9,-5
+                six-eight 41.0 14 -3,12,-7
+                51.5 17 -3,15,-9
             "#]],
         );
     }

@@ -229,6 +229,10 @@ impl Evaluator<'_> {
         if optional && matches!(self.peek_kind()?, COMMA | R_PAREN) {
             return Ok(Argument::Omitted);
         }
+        // The separator after the argument is read by the caller, and counts as a step then.
+        if let Some(value) = self.replayed_rvalue(&[COMMA, R_PAREN], 0) {
+            return Ok(Argument::ByValue(value));
+        }
         Ok(Argument::ByValue(self.rvalue()?))
     }
 }
