@@ -1,35 +1,45 @@
-//! `ripples` and `waves`: concentric waves from ten fixed sources. POV-Ray puts its
-//! sources at pseudo-random points of the unit sphere and gives each wave of `waves` a
-//! frequency from 0.01 to 1.01 drawn by a linear congruential generator; the frequencies
-//! here come from the same generator, the sources from our own. The patterns therefore
-//! match POV-Ray's in wavelength and amplitude, not in where the sources sit.
+//! `ripples` and `waves`: concentric waves from ten fixed sources on the unit sphere.
+//! `ripples` is the mean of the sources' sines; `waves` gives each source a frequency of
+//! its own from 0.01 to 1.01, drawn by a linear congruential generator, and weakens the
+//! faster ones. The sources are POV-Ray 3.7's, measured on its values (module tests): far
+//! from the origin each source's wave is a sinusoid along any direction whose phase is the
+//! source's projection on that direction, so sweeping the frequency gives a sum of ten
+//! exponentials per direction, which a matrix pencil splits into the ten projections;
+//! projections on ten directions fit together into ten points (to 1e-5), refined by least
+//! squares on values near the origin. Which source each `waves` frequency belongs to came
+//! from the phases of the ten frequencies along one axis. POV-Ray's `number_of_waves` has
+//! no effect on either pattern in 3.7 (measured), and is ignored here too.
 
 use crate::trig;
 use glam::DVec3;
 use std::f64::consts::TAU;
 
-/// How many sources the waves come from (POV-Ray's `number_of_waves` default).
+/// How many sources the waves come from.
 const SOURCES: usize = 10;
 
-/// The sources, on the unit sphere, and each one's frequency for `waves`.
+/// The sources, in the order of the frequencies the generator draws for `waves`.
+const POSITIONS: [[f64; 3]; SOURCES] = [
+    [-0.604_377_723_5, 0.492_048_796_8, -0.626_590_117_2],
+    [-0.552_574_361_4, -0.246_074_832_0, -0.796_310_257_2],
+    [-0.444_550_426_1, 0.623_328_795_3, 0.643_298_930_2],
+    [0.496_586_441_4, 0.668_947_987_2, 0.553_091_716_9],
+    [-0.064_371_458_8, -0.805_951_539_6, -0.588_471_874_1],
+    [0.246_189_563_0, -0.914_555_192_0, -0.320_899_520_3],
+    [-0.666_088_020_0, -0.591_879_175_3, -0.453_877_567_2],
+    [-0.520_489_427_3, -0.386_026_962_6, -0.761_625_913_7],
+    [0.137_950_796_3, -0.704_641_984_1, -0.696_024_059_0],
+    [0.564_897_156_1, 0.722_039_852_7, -0.399_436_554_3],
+];
+
+/// The sources and each one's frequency for `waves`.
 fn sources() -> &'static [(DVec3, f64); SOURCES] {
     static TABLE: std::sync::OnceLock<[(DVec3, f64); SOURCES]> = std::sync::OnceLock::new();
     TABLE.get_or_init(|| {
-        let mut place: u32 = 0x1234_5678;
-        let mut uniform = move || {
-            place = place.wrapping_mul(1_103_515_245).wrapping_add(12_345);
-            f64::from((place >> 8) & 0xffff) / 65536.0
-        };
         let mut frequency: i32 = -560_851_967;
-        std::array::from_fn(|_| {
-            // A uniform direction: uniform height and angle around the axis.
-            let height = 2.0 * uniform() - 1.0;
-            let angle = TAU * uniform();
-            let ring = (1.0 - height * height).sqrt();
-            let at = DVec3::new(ring * angle.cos(), height, ring * angle.sin());
+        std::array::from_fn(|i| {
             frequency = frequency.wrapping_mul(1_812_433_253).wrapping_add(12_345);
             let k = f64::from((frequency >> 16) & 0x7fff) * 0.000_030_518_509_476 + 0.01;
-            (at, k)
+            (DVec3::from_array(POSITIONS[i]), k)
         })
     })
 }
@@ -90,6 +100,54 @@ pub fn push(p: DVec3, frequency: f64, phase: f64, own_frequencies: bool) -> DVec
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Values of POV-Ray 3.7's patterns at frequency 1 and phase 0 (the `.red` of a
+    /// pigment function with `color_map { [0 rgb 0] [1 rgb 1] }`), at random points.
+    #[test]
+    fn ripples_and_waves_match_povray() {
+        let ripples_at = [
+            (
+                [0.047_286_498_801, 1.801_854_785_304, -1.423_361_549_121],
+                0.443_040_162_325,
+            ),
+            (
+                [1.794_597_788_549, -0.752_674_191_958, -0.306_694_204_110],
+                0.368_450_582_027,
+            ),
+            (
+                [1.310_810_375_282, -0.363_203_454_523, 0.198_374_750_692],
+                0.708_509_027_958,
+            ),
+        ];
+        for (p, want) in ripples_at {
+            let got = ripples(DVec3::from_array(p), 1.0, 0.0);
+            assert!(
+                (got - want).abs() < 3e-5,
+                "ripples at {p:?}: {got} for {want}"
+            );
+        }
+        let waves_at = [
+            (
+                [-1.657_403_331_426, -1.052_757_973_616, 1.205_097_860_826],
+                0.381_819_486_618,
+            ),
+            (
+                [0.328_648_144_257, -1.623_485_431_038, -0.267_492_239_054],
+                0.595_723_390_579,
+            ),
+            (
+                [-0.083_794_807_437, -1.361_044_341_452, 0.938_308_605_637],
+                0.598_443_090_916,
+            ),
+        ];
+        for (p, want) in waves_at {
+            let got = waves(DVec3::from_array(p), 1.0, 0.0);
+            assert!(
+                (got - want).abs() < 3e-5,
+                "waves at {p:?}: {got} for {want}"
+            );
+        }
+    }
 
     #[test]
     fn ripples_stay_in_range_and_waves_finite() {
