@@ -125,28 +125,27 @@ fn tile_half(tiling: Penrose, q: DVec2) -> Option<Triangle> {
     if distance.is_nan() || distance > 1e300 {
         return None;
     }
-    Some(descend(tiling, least_deflations(tiling, distance), q))
-}
-
-/// The least even count of deflations whose wheel holds every point nearer than
-/// `distance` to the origin: a wheel holds the points nearer than its inner radius,
-/// `cos 18°` of its outer one (rhombs take one cut more, so their wheel is one size up).
-fn least_deflations(tiling: Penrose, distance: f64) -> i32 {
-    let extra = i32::from(tiling == Penrose::Rhombs);
-    let mut inner = PHI.powi(extra) * 18f64.to_radians().cos();
+    // The least even count of deflations whose wheel holds every point nearer than
+    // `distance` to the origin: a wheel holds the points nearer than its inner radius,
+    // `cos 18°` of its outer one, its legs (rhombs take one cut more, so their wheel is
+    // one size up).
+    let mut legs = if tiling == Penrose::Rhombs { PHI } else { 1.0 };
     let mut deflations = 0;
-    while inner <= distance {
-        inner *= PHI * PHI;
+    while legs * COS_18 <= distance {
+        legs *= PHI * PHI;
         deflations += 2;
     }
-    deflations
+    Some(descend(tiling, deflations, legs, q))
 }
 
+/// `cos 18°`, the inner radius of a regular decagon of outer radius 1.
+const COS_18: f64 = 0.951_056_516_295_153_5;
+
 /// The Robinson half of the tile of `tiling` that holds `q`, by descent from the wheel of
-/// `deflations` (even) deflations, which must hold `q`.
-fn descend(tiling: Penrose, deflations: i32, q: DVec2) -> Triangle {
-    let extra = i32::from(tiling == Penrose::Rhombs);
-    let mut half = wheel_triangle(PHI.powi(deflations + extra), deflations % 4 == 0, q);
+/// `deflations` (even) deflations, whose triangles' legs are `legs` long and which must
+/// hold `q`.
+fn descend(tiling: Penrose, deflations: u32, legs: f64, q: DVec2) -> Triangle {
+    let mut half = wheel_triangle(legs, deflations.is_multiple_of(4), q);
     for _ in 0..deflations {
         if !half.obtuse {
             half = half.alpha(q);
@@ -161,27 +160,39 @@ fn descend(tiling: Penrose, deflations: i32, q: DVec2) -> Triangle {
     half
 }
 
-/// The triangle that holds `q` of the wheel of ten acute triangles of legs `radius` round
+/// The directions of the wheel's spokes, `k 36°` from +x towards +z.
+const SPOKES: [DVec2; 10] = {
+    const C36: f64 = 0.809_016_994_374_947_5;
+    const S36: f64 = 0.587_785_252_292_473_1;
+    const C72: f64 = 0.309_016_994_374_947_45;
+    const S72: f64 = 0.951_056_516_295_153_5;
+    [
+        DVec2::new(1.0, 0.0),
+        DVec2::new(C36, S36),
+        DVec2::new(C72, S72),
+        DVec2::new(-C72, S72),
+        DVec2::new(-C36, S36),
+        DVec2::new(-1.0, 0.0),
+        DVec2::new(-C36, -S36),
+        DVec2::new(-C72, -S72),
+        DVec2::new(C72, -S72),
+        DVec2::new(C36, -S36),
+    ]
+};
+
+/// The triangle that holds `q` of the wheel of ten acute triangles of legs `legs` round
 /// the origin, their apexes there, the first from +x towards +z. Neighbours are mirror
 /// images; `mirrored` says which of the two wheels this is.
-fn wheel_triangle(radius: f64, mirrored: bool, q: DVec2) -> Triangle {
-    let step = 36f64.to_radians();
-    let turn = q.y.atan2(q.x).rem_euclid(std::f64::consts::TAU);
-    let index = ((turn / step) as u32).min(9);
-    let corner = |k: u32| {
-        let (sin, cos) = (step * f64::from(k)).sin_cos();
-        DVec2::new(cos, sin) * radius
-    };
-    let (mut b, mut c) = (corner(index), corner(index + 1));
+fn wheel_triangle(legs: f64, mirrored: bool, q: DVec2) -> Triangle {
+    // The sector from one spoke (included) to the next; the origin takes the first.
+    let index = (0..10)
+        .find(|&k| SPOKES[k].perp_dot(q) >= 0.0 && q.perp_dot(SPOKES[(k + 1) % 10]) > 0.0)
+        .unwrap_or(0);
+    let (mut b, mut c) = (SPOKES[index] * legs, SPOKES[(index + 1) % 10] * legs);
     if (index % 2 == 1) == mirrored {
         std::mem::swap(&mut b, &mut c);
     }
-    Triangle {
-        obtuse: false,
-        a: DVec2::ZERO,
-        b,
-        c,
-    }
+    Triangle::new(false, DVec2::ZERO, b, c)
 }
 
 #[cfg(test)]
@@ -245,19 +256,22 @@ mod tests {
         }
     }
 
-    /// Wheels of different sizes draw the same tiling: descents from a wheel four or six
-    /// deflations bigger than needed find the same tile.
+    /// Wheels of different sizes draw the same tiling: descents from wheels of 12, 14 and
+    /// 16 deflations, far bigger than the least that holds these points, find the same
+    /// tile.
     #[test]
     fn bigger_wheels_draw_the_same_tiling() {
         for tiling in [Penrose::KitesAndDarts, Penrose::Rhombs] {
+            let extra = i32::from(tiling == Penrose::Rhombs);
             for i in 0..50 {
                 let q = DVec2::new(
                     f64::from(i) * 0.37 - 9.0,
                     f64::from(i * 7 % 50) * 0.41 - 10.0,
                 );
                 let least = tile_half(tiling, q).unwrap();
-                for more in [4, 6] {
-                    let half = descend(tiling, least_deflations(tiling, q.length()) + more, q);
+                for deflations in [12, 14, 16] {
+                    let legs = PHI.powi(deflations as i32 + extra);
+                    let half = descend(tiling, deflations, legs, q);
                     assert_eq!(half.obtuse, least.obtuse, "{tiling:?} at {q}");
                     assert!(half.a.distance(least.a) < 1e-9, "{tiling:?} at {q}");
                 }
