@@ -59,16 +59,31 @@ struct Neighbourhood {
 /// the searches taking the neighbourhood anew), against some 70 for a search of the tree.
 const NEIGHBOURHOOD_WIDTH: f32 = 1.4;
 
+/// How much wider (in area) than the last search's disc the next one is tried first: the
+/// photons beyond it are not taken into the selection of the nearest only to leave it
+/// again. On caustic.pov (`gather 3, 8`, some 19 photons in reach of a search) 1.5 takes
+/// 12.0 photons into the selection per search, against 14.3 without it, the searches
+/// it is too narrow for included.
+const NEIGHBOUR_DISC_WIDENING: f32 = 1.5;
+
 impl Neighbourhood {
-    /// [`KdTree::nearest`] among the photons held, when they settle it: when every photon
-    /// it keeps, or its whole radius if it keeps fewer than `k`, lies within the part of the
-    /// neighbourhood that surrounds `p`. The margin covers the rounding of distances.
-    fn nearest(&self, p: Vec3, k: usize, max_d2: f32, found: &mut Vec<Found>) -> Option<f32> {
+    /// [`KdTree::nearest`] for `gather` among the photons held, when they settle it: when
+    /// every photon it keeps, or its whole radius if it keeps fewer than `gather.max`, lies
+    /// within the part of the neighbourhood that surrounds `p`. The margin covers the
+    /// rounding of distances. `hint` as for [`KdTree::nearest`].
+    fn nearest(
+        &self,
+        p: Vec3,
+        gather: &Gather,
+        hint: Option<f32>,
+        found: &mut Vec<Found>,
+    ) -> Option<f32> {
         let reach = self.radius * (1.0 - 1e-4) - self.centre.distance(p);
         if reach <= 0.0 {
             return None;
         }
-        let d2 = kdtree::nearest_among(&self.photons, p, k, max_d2, found);
+        let (k, max_d2) = (gather.max, gather.radius * gather.radius);
+        let d2 = kdtree::nearest_among(&self.photons, p, k, max_d2, hint, found);
         (d2 <= reach * reach).then_some(d2)
     }
 
@@ -107,18 +122,16 @@ impl Gather {
         let r2 = self.radius * self.radius;
         let found = &mut scratch.found;
         let near = &mut scratch.near;
-        let mut area = near.nearest(p, self.max, r2, found);
+        // A neighbour's disc, a little widened, usually holds as many photons.
+        let hint = scratch.last.map(|d2| NEIGHBOUR_DISC_WIDENING * d2);
+        let mut area = near.nearest(p, self, hint, found);
         if area.is_none() {
             // The neighbourhood is taken anew around `p`, as wide as the last disc allows.
             let last = scratch.last.unwrap_or(r2).min(r2);
             near.take(tree, p, NEIGHBOURHOOD_WIDTH * last.sqrt());
-            area = near.nearest(p, self.max, r2, found);
+            area = near.nearest(p, self, hint, found);
         }
-        let area = area.unwrap_or_else(|| {
-            // A neighbour's disc, a little widened, usually holds as many photons.
-            let hint = scratch.last.map(|d2| 2.0 * d2);
-            tree.nearest(p, self.max, r2, hint, found)
-        });
+        let area = area.unwrap_or_else(|| tree.nearest(p, self.max, r2, hint, found));
         scratch.last = (found.len() == self.max).then_some(area);
         if found.len() >= self.min {
             return estimate(found, area);

@@ -62,14 +62,9 @@ impl KdTree {
         hint: Option<f32>,
         found: &mut Vec<Found>,
     ) -> f32 {
-        if let Some(hint) = hint.filter(|h| *h < max_d2) {
-            let d2 = self.search(p, k, hint, found);
-            if found.len() == k {
-                return d2;
-            }
-        }
-        let d2 = self.search(p, k, max_d2, found);
-        if found.len() == k { d2 } else { max_d2 }
+        hinted(k, max_d2, hint, found, |limit, found| {
+            self.search(p, k, limit, found)
+        })
     }
 
     /// [`Self::nearest`] within `max_d2`; returns the squared distance of the farthest
@@ -136,21 +131,45 @@ impl KdTree {
     }
 }
 
-/// [`KdTree::nearest`]'s search among `candidates` alone (photons with their indices):
-/// the up to `k` nearest `p` within squared distance `max_d2`, into `found`; returns the
-/// squared distance of the farthest one kept when `k` were found, else `max_d2`.
+/// [`KdTree::nearest`] among `candidates` alone (photons with their indices).
 pub fn nearest_among(
     candidates: &[(Vec3, u32)],
     p: Vec3,
     k: usize,
     max_d2: f32,
+    hint: Option<f32>,
     found: &mut Vec<Found>,
 ) -> f32 {
-    let mut best = Best::new(found, k, max_d2);
-    for &(position, index) in candidates {
-        best.offer(position.distance_squared(p), index);
+    hinted(k, max_d2, hint, found, |limit, found| {
+        let mut best = Best::new(found, k, limit);
+        for &(position, index) in candidates {
+            best.offer(position.distance_squared(p), index);
+        }
+        best.limit
+    })
+}
+
+/// A search for the `k` nearest within `max_d2` by `search(limit, found)` (which returns
+/// the squared distance of the farthest photon kept when it keeps `k`), tried within
+/// `hint` first when that is nearer: when the hint holds `k` photons they are the nearest,
+/// found without taking in and throwing out the farther ones. Returns the squared
+/// distance of the farthest photon kept when `k` were found, else `max_d2`.
+#[inline(always)]
+fn hinted(
+    k: usize,
+    max_d2: f32,
+    hint: Option<f32>,
+    found: &mut Vec<Found>,
+    mut search: impl FnMut(f32, &mut Vec<Found>) -> f32,
+) -> f32 {
+    if let Some(hint) = hint.filter(|h| *h < max_d2) {
+        let d2 = search(hint, found);
+        if found.len() == k {
+            return d2;
+        }
     }
-    best.limit
+    let d2 = search(max_d2, found);
+    if found.len() == k { d2 } else { max_d2 }
 }
 
 /// The nearest photons found so far: gathered as they come until there are `k`, then a
