@@ -1,7 +1,7 @@
 //! How fog, rainbows, the sky sphere and media act on the rays the tracer follows. Kept
 //! beside the tracer so that scenes without them pay one flag test per ray.
 
-use super::{Tracer, greyscale};
+use super::{Tracer, World, greyscale};
 use crate::colour::Sample;
 use crate::interior::Interior;
 use crate::light::Incoming;
@@ -95,7 +95,8 @@ impl<'w> Tracer<'w> {
             let atmospheric = atmosphere.iter().flat_map(|a| &a.media);
             for (index, medium) in interior_media.chain(atmospheric).enumerate() {
                 let mut lighting = |p: DVec3, out: &mut Vec<Incident>| {
-                    self.media_lights(p, &inside, light_set, out);
+                    let lit_at = within_stretch(world, &unit, reach, p);
+                    self.media_lights(lit_at, &inside, light_set, out);
                     if let Some(photons) = photons {
                         photons.lights_at(p, &mut self.gather_scratch.found, out);
                     }
@@ -169,6 +170,27 @@ impl<'w> Tracer<'w> {
                 .through;
         }
         through
+    }
+}
+
+/// Where the light arriving at the media sample `p` of the stretch of `ray` from its
+/// origin to `reach` is measured: a hair inside the stretch. The samples at its ends lie
+/// on the surfaces the ray starts from and ends at, and a shadow ray leaving through such
+/// a surface crosses it nearer than any hit is found; it would then count the container's
+/// media all the way to the light. POV-Ray's renders show those samples lit as the
+/// samples next to them are (measured: a box of scattering media whose top lies just
+/// above the viewing ray, lit from above, shows 0.1322 there, 4% more than when the
+/// entry sample's light crossed the box's media to the light).
+fn within_stretch(world: &World, ray: &Ray, reach: f64, p: DVec3) -> DVec3 {
+    let margin = 1000.0 * world.tolerance(p);
+    if reach <= 2.0 * margin {
+        return ray.at(reach * 0.5);
+    }
+    let t = (p - ray.origin).dot(ray.direction);
+    if t < margin || t > reach - margin {
+        ray.at(t.clamp(margin, reach - margin))
+    } else {
+        p
     }
 }
 
@@ -250,6 +272,45 @@ mod tests {
         assert!(centre(&world(&lit), &lit).x > 0.05);
         let fill = scene("shadowless");
         assert_eq!(centre(&world(&fill), &fill), DVec3::ZERO);
+    }
+
+    #[test]
+    fn light_crosses_a_containers_media_to_its_edge() {
+        // A white disc in the middle of a slab of absorbing media, lit and seen from the
+        // same side: the light crosses the 1 unit of media from the slab's face to the
+        // disc, and the view ray the same; nothing of the 9 units from there to the light.
+        let scene = "camera { location <0, 0, -5> look_at 0 }\n\
+             light_source { <0, 0, -10> rgb 1 }\n\
+             disc { 0, -z, 1 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n\
+             box { <-3, -3, -1>, <3, 3, 1> hollow pigment { rgbt 1 } \
+             interior { media { absorption 0.5 } } }";
+        let seen = centre(&world(scene), scene);
+        let expected = (-1f64).exp();
+        assert!(
+            (seen - DVec3::splat(expected)).abs().max_element() < 1e-6,
+            "{seen}"
+        );
+    }
+
+    #[test]
+    fn light_on_the_face_a_ray_enters_by_is_not_dimmed_beyond_it() {
+        // Scattering media lit from behind the camera: the light reaching the sample at
+        // depth d crosses d units of media, the sample on the entry face none, however
+        // close to the face its shadow ray leaves the box. Method 3's 6 steps of 0.5
+        // each add their mean light dimmed from their start.
+        let scene = "camera { location <0, 0, -5> look_at 0 }\n\
+             light_source { <0, 0, -10> rgb 1 }\n\
+             box { <-3, -3, -1.5>, <3, 3, 1.5> hollow pigment { rgbt 1 } \
+             interior { media { scattering { 1, 0.1 } } } }";
+        let seen = centre(&world(scene), scene);
+        let source = |k: i32| 0.1 * (-0.05 * f64::from(k)).exp();
+        let expected: f64 = (0..6)
+            .map(|k| (-0.05 * f64::from(k)).exp() * 0.5 * (source(k) + source(k + 1)) / 2.0)
+            .sum();
+        assert!(
+            (seen - DVec3::splat(expected)).abs().max_element() < 1e-6,
+            "{seen} {expected}"
+        );
     }
 
     #[test]
