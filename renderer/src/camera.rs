@@ -76,16 +76,23 @@ impl Camera {
         self.mesh.as_ref()
     }
 
-    /// For a perspective camera, the point every ray starts from and the matrix whose
-    /// columns are `right`, `up` and `direction`: a ray's direction is `direction` plus the
-    /// image position's shares of the other two. `None` for the other projections.
-    pub fn eye(&self) -> Option<(DVec3, DMat3)> {
-        (self.kind == CameraKind::Perspective).then(|| {
-            (
-                self.location,
-                DMat3::from_cols(self.right, self.up, self.direction),
-            )
-        })
+    /// How a perspective or orthographic camera's rays leave it, for the vista of the
+    /// objects each may meet ([`crate::bvh::vista`]); `None` for the other projections.
+    pub fn view(&self) -> Option<View> {
+        let frame = DMat3::from_cols(self.right, self.up, self.direction);
+        match self.kind {
+            CameraKind::Perspective => Some(View::Perspective {
+                eye: self.location,
+                frame,
+            }),
+            // Every ray carries the one direction `ray` normalizes, bit for bit.
+            CameraKind::Orthographic => Some(View::Orthographic {
+                location: self.location,
+                frame,
+                ray_direction: self.direction.normalize_or_zero(),
+            }),
+            _ => None,
+        }
     }
 
     /// The ray through image position `(x, y)`, in pixels from the top-left corner of the
@@ -235,6 +242,22 @@ impl Camera {
         let (st, ct) = theta.sin_cos();
         (cp * st) * self.right + (sp * st) * self.up + ct * self.direction
     }
+}
+
+/// Where a camera's rays start and which way they go: the matrix `frame` has the camera's
+/// `right`, `up` and `direction` as columns.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum View {
+    /// Every ray starts at `eye`, along `direction` plus the image position's shares of
+    /// `right` and `up`.
+    Perspective { eye: DVec3, frame: DMat3 },
+    /// Every ray goes along `ray_direction` (the camera's `direction`, normalized), from
+    /// `location` plus the image position's shares of `right` and `up`.
+    Orthographic {
+        location: DVec3,
+        frame: DMat3,
+        ray_direction: DVec3,
+    },
 }
 
 fn ratio(a: f64, b: f64) -> f64 {

@@ -85,21 +85,15 @@ fn value_at(pattern: &scene::Pattern, at: &TexturePoint) -> PatternValue {
 }
 
 impl Surface {
-    /// The colour and finish of a surface of one layer of a solid, opaque colour without
-    /// bumps or reflection: the same at every point, hiding everything behind it and
-    /// sending no further rays, so that the tracer shades it without the layered model's
-    /// bookkeeping.
-    pub fn plain(&self) -> Option<(DVec3, &Finish)> {
+    /// The layer of a surface of one layer without bumps or reflection, whatever its
+    /// pigment: where the pigment is opaque it hides everything behind the surface and
+    /// sends no further rays, so that the tracer shades it as a plain surface of the
+    /// pigment's colour there.
+    pub fn single_unbumped_layer(&self) -> Option<&Layer> {
         match self {
             Surface::Layers(layers) => match layers.as_slice() {
-                [
-                    Layer {
-                        pigment: Pigment::Solid(c),
-                        normal: None,
-                        finish,
-                    },
-                ] if c.filter == 0.0 && c.transmit == 0.0 && finish.reflection.is_none() => {
-                    Some((c.rgb, finish))
+                [layer] if layer.normal.is_none() && layer.finish.reflection.is_none() => {
+                    Some(layer)
                 }
                 _ => None,
             },

@@ -234,11 +234,12 @@ impl Leaf {
         self.material.surface.for_each_layers(at, 1.0, f);
     }
 
-    /// The colour and finish of the leaf's surface when it is plain (see
-    /// [`crate::material::Surface::plain`]).
-    pub fn plain_surface(&self) -> Option<(DVec3, &analysis::scene::Finish)> {
-        if self.face_materials.is_empty() {
-            self.material.surface.plain()
+    /// The one layer of an opaque surface without bumps or reflection (see
+    /// [`crate::material::Surface::single_unbumped_layer`]), whose pigment is opaque
+    /// everywhere.
+    pub fn opaque_layer(&self) -> Option<&Layer> {
+        if self.face_materials.is_empty() && !self.material.transmits {
+            self.material.surface.single_unbumped_layer()
         } else {
             None
         }

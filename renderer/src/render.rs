@@ -36,7 +36,7 @@ pub fn render_with_warnings(
         },
     )?;
     let camera = camera_of(scene)?;
-    world.bvh.view_from(camera.eye());
+    world.bvh.view_from(camera.view());
     let (width, height) = (options.width.max(1), options.height.max(1));
     let region = Region::from_options(options, width, height);
     let frame = radiosity::Frame {

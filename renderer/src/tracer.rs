@@ -212,14 +212,23 @@ impl<'w> Tracer<'w> {
         let p = ray.at(hit.t);
         let leaf: &'w Leaf = hit.leaf;
         if self.world.quality.lighting
-            && let Some((colour, finish)) = leaf.plain_surface()
+            && let Some(layer) = leaf.opaque_layer()
             && self.shades_plainly()
         {
+            let at = leaf.texture_point(p, hit.part, ray);
             let mut normal = leaf.normal(p, hit.part);
             if normal.dot(ray.direction) > 0.0 {
                 normal = -normal;
             }
-            return self.shade_plain(ray, p, normal, leaf, colour, finish);
+            let pigment = match at.facing {
+                Some(_) => layer.pigment.colour_at(&at.with_normal(normal)),
+                None => layer.pigment.colour_at(&at),
+            };
+            // The pigment shows as a plain surface's colour wherever it is opaque, which
+            // its material says it is everywhere.
+            if pigment.filter == 0.0 && pigment.transmit == 0.0 && pigment.rgb.is_finite() {
+                return self.shade_plain(ray, p, normal, leaf, pigment.rgb, &layer.finish);
+            }
         }
         self.shade_layered(ray, hit, level, weight)
     }
@@ -254,7 +263,7 @@ impl<'w> Tracer<'w> {
         total
     }
 
-    /// Whether plain surfaces may skip the layered model: without radiosity, photons or
+    /// Whether surfaces of one opaque layer may skip the layered model: without radiosity, photons or
     /// subsurface light, which need its bookkeeping, and with the bailout letting the top
     /// layer show and nothing through it.
     fn shades_plainly(&self) -> bool {
@@ -265,11 +274,11 @@ impl<'w> Tracer<'w> {
             && (0.0..1.0).contains(&world.adc_bailout)
     }
 
-    /// [`Self::shade_layers`] for a plain surface (see
-    /// [`crate::material::Surface::plain`]), as [`Self::shades_plainly`] allows: its own
-    /// ambient and emitted light and the light sources' — its one opaque layer shows
-    /// nothing beneath or behind it and reflects nothing, so there is nothing to stack,
-    /// filter or trace further.
+    /// [`Self::shade_layers`] for a point of a surface of one opaque layer without bumps
+    /// or reflection (see [`Leaf::opaque_layer`]) whose pigment there is `colour`, as
+    /// [`Self::shades_plainly`] allows: its own ambient and emitted light and the light
+    /// sources' — the layer shows nothing beneath or behind it and reflects nothing, so
+    /// there is nothing to stack, filter or trace further.
     fn shade_plain(
         &mut self,
         ray: &Ray,
@@ -1123,9 +1132,11 @@ mod tests {
     use crate::build::scene_and_world_of_source;
     use crate::camera::Camera;
 
-    /// Plain surfaces shade as the layered model shades them, to the bit, under every
-    /// kind of finish and light the shortcut keeps: highlights, backside and double
-    /// illumination, iridescence, graininess, shadowless, spot and fading lights, shadows.
+    /// Surfaces of one opaque layer shade as the layered model shades them, to the bit,
+    /// under every kind of finish and light the shortcut keeps: highlights, backside and
+    /// double illumination, iridescence, graininess, shadowless, spot and fading lights,
+    /// shadows; with solid pigments and patterned ones, blended, in blocks and facing the
+    /// ray.
     #[test]
     fn plain_surfaces_shade_as_layers_do() {
         let (scene, world) = scene_and_world_of_source(
@@ -1142,7 +1153,11 @@ mod tests {
             box { <-0.5, -1, -2>, <0.5, 0.2, -1.5> pigment { rgb 0.8 }
               finish { diffuse 0.6, 0.4 crand 0.1 ambient 0.3 } }
             disc { <0, 0.5, -2.5>, <0.3, 1, -0.2>, 0.5 pigment { rgb <1, 0.5, 0.5> } double_illuminate }
-            plane { y, -1 pigment { rgb <0.92, 0.92, 0.88> } finish { diffuse 0.6 } }",
+            sphere { <0, 1.2, 1>, 0.6 pigment { gradient x color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] } }
+              finish { specular 0.3 } }
+            sphere { <-2, 1, 1>, 0.6 pigment { aoi color_map { [0 rgb 0.1] [1 rgb <0.9, 0.8, 0.1>] } } }
+            plane { y, -1 pigment { checker rgb <0.92, 0.92, 0.88> rgb <0.3, 0.4, 0.5> }
+              finish { diffuse 0.6 } }",
         );
         let camera = Camera::from_scene(&scene.camera).unwrap();
         let mut tracer = Tracer::new(&world);
@@ -1155,7 +1170,7 @@ mod tests {
                 let Some(hit) = tracer.first_hit(&ray, RayKind::Primary) else {
                     continue;
                 };
-                plain += usize::from(hit.leaf.plain_surface().is_some());
+                plain += usize::from(hit.leaf.opaque_layer().is_some());
                 let shaded = tracer.shade(&ray, &hit, 1, 1.0);
                 let layered = tracer.shade_layered(&ray, &hit, 1, 1.0);
                 assert_eq!(shaded, layered, "pixel ({x}, {y})");

@@ -6,9 +6,9 @@ pub mod tree;
 pub mod vista;
 
 use crate::bounds::Aabb;
+use crate::camera::View;
 use crate::object::{Hit, Object, Query};
 use crate::ray::RayKind;
-use glam::{DMat3, DVec3};
 use tree::Tree;
 use vista::Vista;
 
@@ -25,8 +25,8 @@ pub struct Bvh {
     /// The kinds of rays that may meet some object (a set of
     /// [`RayKind::bit`](crate::ray::RayKind::bit)s).
     kinds: u8,
-    /// The objects each ray from a perspective camera's eye may meet, when the camera is
-    /// known (see [`Bvh::view_from`]).
+    /// The objects each ray from a perspective or orthographic camera may meet, when the
+    /// camera is known (see [`Bvh::view_from`]).
     vista: Option<Vista>,
 }
 
@@ -57,11 +57,11 @@ impl Bvh {
         }
     }
 
-    /// Lists the objects rays from a perspective camera's `eye` may meet, by direction
-    /// (`frame`'s columns: the camera's right, up and direction), for the camera rays'
-    /// searches; `None` for another camera.
-    pub fn view_from(&mut self, eye: Option<(DVec3, DMat3)>) {
-        self.vista = eye.and_then(|(eye, frame)| Vista::build(&self.objects, eye, frame));
+    /// Lists the objects the rays of a perspective or orthographic camera may meet, by
+    /// where they cross the image, for the camera rays' searches; `None` for another
+    /// camera.
+    pub fn view_from(&mut self, view: Option<View>) {
+        self.vista = view.and_then(|view| Vista::build(&self.objects, view));
     }
 
     /// Whether rays of `kind` may meet some object: shadow rays meet none in a scene
@@ -107,7 +107,7 @@ impl Bvh {
         self.search(q, scratch, false)
     }
 
-    /// [`Bvh::nearest`] for a ray from the camera's eye, among the unbounded objects and
+    /// [`Bvh::nearest`] for a ray the camera may trace, among the unbounded objects and
     /// those its cell of the vista lists, nearest first, until the next lies beyond the
     /// nearest crossing found.
     fn nearest_listed<'a>(
@@ -124,7 +124,7 @@ impl Bvh {
             }
         }
         for entry in cell.entries {
-            if entry.depth >= q.tmax * cell.depth_per_t {
+            if entry.depth >= cell.origin_depth + q.tmax * cell.depth_per_t {
                 break;
             }
             // Leaves, most of the listed objects, are tested here without a call.

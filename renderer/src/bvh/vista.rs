@@ -1,17 +1,23 @@
-//! The objects a ray from a perspective camera's eye may meet, by where the ray crosses the
-//! image: each bounded object's box, seen from the eye, covers a rectangle of the image,
-//! and a grid of cells over the image lists the objects whose rectangles reach each cell,
-//! nearest first. A camera ray then tests its cell's few objects instead of walking the
-//! hierarchy, whose boxes overlap heavily in scenes of a few large, tilted objects (the
-//! rings of hopf.pov). POV-Ray kept such a "vista buffer" for the same reason.
+//! The objects a ray from a perspective camera's eye, or along an orthographic camera's
+//! direction, may meet, by where the ray crosses the image: each bounded object's box, seen
+//! from the camera, covers a rectangle of the image, and a grid of cells over the image
+//! lists the objects whose rectangles reach each cell, nearest first. A camera ray then
+//! tests its cell's few objects instead of walking the hierarchy, whose boxes overlap
+//! heavily in scenes of a few large, tilted objects (the rings of hopf.pov) and which a
+//! ray crosses node by node even in a row of small ones (the tiles of the pattern scenes).
+//! POV-Ray kept such a "vista buffer" for the same reason.
 //!
 //! The lists hold for any ray from the eye, whatever traced it: a point `p` is seen along
 //! the direction `d` when `p - eye = t d`, so in the camera's frame (`right`, `up`,
 //! `direction`) both have the same image position, and `p`'s depth there bounds `t` from
 //! below. Objects partly behind the eye are listed everywhere; those wholly behind it,
-//! which no ray from the eye meets forwards, nowhere.
+//! which no ray from the eye meets forwards, nowhere. Through an orthographic camera the
+//! image position is the frame's across and up themselves, the same for every point of a
+//! ray along the camera's direction wherever it starts, and depth grows along the ray
+//! from that of its origin.
 
 use crate::bounds::Aabb;
+use crate::camera::View;
 use crate::fast_math;
 use crate::object::Object;
 use crate::ray::{Ray, RayKind};
@@ -41,26 +47,40 @@ pub struct Entry {
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Vista {
-    eye: DVec3,
+    /// A perspective camera's eye, or the point an orthographic camera's image is centred on.
+    origin: DVec3,
+    /// An orthographic camera's rays' direction; `None` for a perspective camera.
+    parallel: Option<DVec3>,
     /// World vectors to the camera's frame: image position across, up, and depth.
     to_frame: DMat3,
+    /// The largest depth, either side of the origin, of any listed object: orthographic
+    /// rays from beyond it are left to the hierarchy.
+    reach: f64,
     /// Where each cell's entries start in `entries`, row by row; one more at the end.
     starts: Vec<u32>,
     entries: Vec<Entry>,
 }
 
-/// The cell a ray falls into, and the depth share of its direction, which turns a depth
-/// into a ray parameter.
+/// The cell a ray falls into, the depth of its origin and the depth share of its
+/// direction, which turn a depth into a ray parameter.
 pub struct Cell<'v> {
     pub entries: &'v [Entry],
+    pub origin_depth: f64,
     pub depth_per_t: f64,
 }
 
 impl Vista {
-    /// The lists for `objects` seen from `eye`, whose rays leave along `frame`'s
-    /// `direction` column plus shares of its `right` and `up` columns; `None` when the
-    /// frame is degenerate or the lists would grow too long.
-    pub fn build(objects: &[Object], eye: DVec3, frame: DMat3) -> Option<Vista> {
+    /// The lists for `objects` seen through the camera `view`; `None` when its frame is
+    /// degenerate or the lists would grow too long.
+    pub fn build(objects: &[Object], view: View) -> Option<Vista> {
+        let (origin, frame, parallel) = match view {
+            View::Perspective { eye, frame } => (eye, frame, None),
+            View::Orthographic {
+                location,
+                frame,
+                ray_direction,
+            } => (location, frame, Some(ray_direction)),
+        };
         if objects.is_empty() || objects.len() > MAX_OBJECTS || frame.determinant() == 0.0 {
             return None;
         }
@@ -74,8 +94,19 @@ impl Vista {
             .iter()
             .enumerate()
             .filter(|(_, object)| object.kinds() & RayKind::Primary.bit() != 0)
-            .filter_map(|(index, object)| Some((index as u32, seen_from(object, eye, to_frame)?)))
+            .filter_map(|(index, object)| {
+                Some((index as u32, seen_from(object, origin, to_frame, parallel)?))
+            })
             .collect();
+        let reach = seen
+            .iter()
+            .map(|(_, seen)| seen.reach())
+            .fold(0.0, f64::max);
+        if let Some(direction) = parallel
+            && !stays_in_its_cells(to_frame * direction, reach)
+        {
+            return None;
+        }
         seen.sort_by(|(i, a), (j, b)| a.rect.min.z.total_cmp(&b.rect.min.z).then(i.cmp(j)));
         // Each cell's entries, counted and then placed.
         let mut listed: Vec<(u32, Entry)> = Vec::new();
@@ -114,37 +145,64 @@ impl Vista {
             next[cell as usize] += 1;
         }
         Some(Vista {
-            eye,
+            origin,
+            parallel,
             to_frame,
+            reach,
             starts,
             entries,
         })
     }
 
-    /// The cell of a ray from the eye forwards into the image, whose objects are the only
-    /// ones it may meet at a positive parameter; `None` for any other ray.
+    /// The cell of a ray the camera may trace (from the eye, or along the orthographic
+    /// camera's direction from not too far), whose objects are the only ones it may meet
+    /// at a positive parameter; `None` for any other ray.
     #[inline]
     pub fn cell(&self, ray: &Ray) -> Option<Cell<'_>> {
-        if ray.origin != self.eye {
-            return None;
-        }
-        let v = self.to_frame * ray.direction;
-        if v.z.is_nan() || v.z <= 0.0 {
-            return None;
-        }
-        let x = (v.x / v.z + 0.5) * CELLS as f64;
-        let y = (v.y / v.z + 0.5) * CELLS as f64;
+        let (x, y, origin_depth, depth_per_t) = match self.parallel {
+            None => {
+                if ray.origin != self.origin {
+                    return None;
+                }
+                let v = self.to_frame * ray.direction;
+                if v.z.is_nan() || v.z <= 0.0 {
+                    return None;
+                }
+                (v.x / v.z, v.y / v.z, 0.0, v.z)
+            }
+            Some(direction) => {
+                if ray.direction != direction {
+                    return None;
+                }
+                let o = self.to_frame * (ray.origin - self.origin);
+                if o.z.is_nan() || o.z.abs() > self.reach {
+                    return None;
+                }
+                (o.x, o.y, o.z, (self.to_frame * direction).z)
+            }
+        };
+        let x = (x + 0.5) * CELLS as f64;
+        let y = (y + 0.5) * CELLS as f64;
         // Also false for NaN.
         if !(x >= 0.0 && x < CELLS as f64 && y >= 0.0 && y < CELLS as f64) {
             return None;
         }
-        let cell = y as usize * CELLS + x as usize;
+        // Through `u32`, whose conversion from a float is cheaper than `usize`'s.
+        let cell = y as u32 as usize * CELLS + x as u32 as usize;
         let (start, end) = (self.starts[cell] as usize, self.starts[cell + 1] as usize);
         Some(Cell {
             entries: &self.entries[start..end],
-            depth_per_t: v.z,
+            origin_depth,
+            depth_per_t,
         })
     }
+}
+
+/// Whether rays along `v` (a direction in the camera's frame) from no deeper than the
+/// listed objects reach stay within the slack of their image position until they have
+/// passed every object: a direction tilted by rounding, not by the camera.
+fn stays_in_its_cells(v: DVec3, reach: f64) -> bool {
+    v.z > 0.0 && 2.0 * reach * (v.x.abs() + v.y.abs()) / v.z <= 0.5 * SLACK
 }
 
 /// Where an object may show in the image: a box of image positions (x, y) and depths (z),
@@ -155,6 +213,11 @@ struct Seen {
 }
 
 impl Seen {
+    /// The largest depth, either side of the camera, at which the object may lie.
+    fn reach(&self) -> f64 {
+        self.rect.min.z.abs().max(self.rect.max.z.abs())
+    }
+
     /// The cells `[first, end)` of row `y`, among `cells`, that the outlines may reach.
     fn row(&self, y: usize, cells: (usize, usize)) -> (usize, usize) {
         let n = CELLS as f64;
@@ -199,9 +262,16 @@ impl Seen {
     }
 }
 
-/// Where `object` may show from the eye: the whole image at depth -∞ for an object
-/// reaching behind the eye, `None` for one wholly behind it.
-fn seen_from(object: &Object, eye: DVec3, to_frame: DMat3) -> Option<Seen> {
+/// Where `object` may show through the camera at `origin` (the eye, or the orthographic
+/// camera's location when its rays are `parallel`): for a perspective camera the whole
+/// image at depth -∞ for an object reaching behind the eye, `None` for one wholly behind
+/// it.
+fn seen_from(
+    object: &Object,
+    origin: DVec3,
+    to_frame: DMat3,
+    parallel: Option<DVec3>,
+) -> Option<Seen> {
     // A leaf's own box, tilted with it, may cover less of the image than its world box;
     // the object lies in both, and so does its image.
     let tilted = match object {
@@ -216,7 +286,10 @@ fn seen_from(object: &Object, eye: DVec3, to_frame: DMat3) -> Option<Seen> {
         .into_iter()
         .flatten()
     {
-        let (rect, points) = project(&corners, eye, to_frame)?;
+        let (rect, points) = match parallel {
+            None => project(&corners, origin, to_frame)?,
+            Some(_) => project_parallel(&corners, origin, to_frame),
+        };
         seen.rect = seen.rect.intersection(&rect);
         if let Some(points) = points {
             seen.outlines.push(convex_hull(&points));
@@ -267,6 +340,27 @@ fn project(
     Some((rect, Some(points)))
 }
 
+/// The box around the image positions and depths of a box's corners through an
+/// orthographic camera, centred on `origin`, and the positions themselves.
+fn project_parallel(
+    corners: &[DVec3; 8],
+    origin: DVec3,
+    to_frame: DMat3,
+) -> (Aabb, Option<[DVec2; 8]>) {
+    let frame: [DVec3; 8] = corners.map(|c| to_frame * (c - origin));
+    let mut seen = Aabb::EMPTY;
+    for v in &frame {
+        seen.min = seen.min.min(*v);
+        seen.max = seen.max.max(*v);
+    }
+    let pad = SLACK * (DVec3::ONE + seen.min.abs().max(seen.max.abs()));
+    let rect = Aabb {
+        min: seen.min - pad,
+        max: seen.max + pad,
+    };
+    (rect, Some(frame.map(|v| DVec2::new(v.x, v.y))))
+}
+
 /// The convex hull of `points`, counter-clockwise (Andrew's monotone chain).
 fn convex_hull(points: &[DVec2; 8]) -> Vec<DVec2> {
     let mut sorted = *points;
@@ -307,25 +401,25 @@ mod tests {
     use crate::object::Query;
     use crate::ray::RayKind;
 
-    /// Every camera ray of a scene meets the same crossing with the vista as through the
-    /// hierarchy alone: tilted rings, a box reaching behind the eye, one wholly behind it,
-    /// a hidden one and a plane.
-    #[test]
-    fn camera_rays_meet_what_the_hierarchy_finds() {
-        let (scene, mut world) = scene_and_world_of_source(
-            "camera { location <0, 1, -6> look_at <0, 0, 0> right -1.333*x angle 50 }
-            torus { 1.5, 0.1 rotate <40, 20, 10> translate <-1, 0, 0> }
-            torus { 1.2, 0.2 matrix <0.6,0.8,0, -0.8,0.6,0, 0,0,1, 0.5,0.2,1> }
-            sphere { <1, 0.5, 0>, 0.7 }
-            sphere { <0, 0, -10>, 1 }
-            sphere { <0.2, 0.1, 2>, 0.3 no_image }
-            box { <-3, -0.5, -8>, <-2, 0, 3> }
-            union { sphere { <2, -1, 3>, 0.5 } cylinder { <2, -1, 3>, <3, 0, 4>, 0.2 } }
-            plane { y, -1 }",
-        );
+    /// The objects of the tests: tilted rings, a box reaching behind a camera at z = -6,
+    /// one wholly behind it, a hidden one and a plane.
+    const OBJECTS: &str = "
+        torus { 1.5, 0.1 rotate <40, 20, 10> translate <-1, 0, 0> }
+        torus { 1.2, 0.2 matrix <0.6,0.8,0, -0.8,0.6,0, 0,0,1, 0.5,0.2,1> }
+        sphere { <1, 0.5, 0>, 0.7 }
+        sphere { <0, 0, -10>, 1 }
+        sphere { <0.2, 0.1, 2>, 0.3 no_image }
+        box { <-3, -0.5, -8>, <-2, 0, 3> }
+        union { sphere { <2, -1, 3>, 0.5 } cylinder { <2, -1, 3>, <3, 0, 4>, 0.2 } }
+        plane { y, -1 }";
+
+    /// Every camera ray of `camera` meets the same crossing of [`OBJECTS`] with the vista
+    /// as through the hierarchy alone.
+    fn camera_rays_meet_what_the_hierarchy_finds(camera: &str) {
+        let (scene, mut world) = scene_and_world_of_source(&format!("{camera}\n{OBJECTS}"));
         let camera = Camera::from_scene(&scene.camera).unwrap();
         let plain = world.bvh.clone();
-        world.bvh.view_from(camera.eye());
+        world.bvh.view_from(camera.view());
         assert!(world.bvh.vista.is_some());
         let (width, height) = (97.0, 61.0);
         let mut scratch = Vec::new();
@@ -345,5 +439,21 @@ mod tests {
             }
         }
         assert!(hits > 1000, "the scene is in view");
+    }
+
+    #[test]
+    fn perspective_camera_rays_meet_what_the_hierarchy_finds() {
+        camera_rays_meet_what_the_hierarchy_finds(
+            "camera { location <0, 1, -6> look_at <0, 0, 0> right -1.333*x angle 50 }",
+        );
+    }
+
+    /// An orthographic camera looking down at a slant, whose rays start in front of some
+    /// objects and behind others.
+    #[test]
+    fn orthographic_camera_rays_meet_what_the_hierarchy_finds() {
+        camera_rays_meet_what_the_hierarchy_finds(
+            "camera { orthographic location <1, 3, -6> look_at <0, 0, 0> right 8*x up 6*y }",
+        );
     }
 }
