@@ -313,8 +313,8 @@ pub fn evaluate_warped(pattern: &Pattern, p: DVec3, facing: Option<&Facing>) -> 
     let raw = match &pattern.kind {
         PatternKind::Checker => {
             let q = turbulent(p) + DVec3::splat(1e-9);
-            let sum = q.x.floor() + q.y.floor() + q.z.floor();
-            return PatternValue::Block((sum.rem_euclid(2.0)) as usize);
+            let sum = floor(q.x) + floor(q.y) + floor(q.z);
+            return PatternValue::Block(usize::from(is_odd(sum)));
         }
         PatternKind::Brick { size, mortar } => {
             return PatternValue::Block(blocks::brick(turbulent(p), *size, *mortar));
@@ -442,6 +442,44 @@ fn floor(x: f64) -> f64 {
     }
 }
 
+/// Whether the whole number `x` is odd, as `x.rem_euclid(2.0) == 1.0` says (a library
+/// call) but through an integer: from 2^53 on every float is even, and NaN and the
+/// infinities are not odd.
+fn is_odd(x: f64) -> bool {
+    const EXACT_BELOW: f64 = 9_007_199_254_740_992.0;
+    x.abs() < EXACT_BELOW && x as i64 & 1 == 1
+}
+
+/// `v % MODULUS` for a finite `v`, bit for bit, without the library's remainder (a call
+/// of some eighty instructions) for the values of a few periods that patterns give: the
+/// largest multiple of the modulus by a power of two that fits is taken off, then the
+/// next smaller one, as long division does. Each subtraction takes at most twice the
+/// subtrahend from a value between it and its double, which floats do exactly
+/// (Sterbenz), so the remainder is the exact one the library returns.
+fn wrap(v: f64) -> f64 {
+    const LONG_DIVISION_BELOW: f64 = 1024.0 * MODULUS;
+    let mut r = v.abs();
+    if r >= LONG_DIVISION_BELOW {
+        return v % MODULUS;
+    }
+    let mut d = MODULUS;
+    while d * 2.0 <= r {
+        d *= 2.0;
+    }
+    while d >= MODULUS {
+        if r >= d {
+            r -= d;
+        }
+        d *= 0.5;
+    }
+    r.copysign(v)
+}
+
+/// The period of `shape`'s wrap: POV-Ray wraps with a modulus a hair above 1, so that a
+/// value of exactly 1 (the centre of a spherical pattern) keeps the last map entry; the
+/// conformance suite shows the hair is below 1e-6 (gradient at 1.75 prints 0.750000).
+const MODULUS: f64 = 1.000_000_1;
+
 /// Frequency and phase, then the wave type; the result lies in 0..1.
 fn shape(pattern: &Pattern, raw: f64) -> f64 {
     // The evaluator gives marble and wood their triangle wave unless the scene says
@@ -451,13 +489,10 @@ fn shape(pattern: &Pattern, raw: f64) -> f64 {
     if !v.is_finite() {
         v = 0.0;
     }
-    // POV-Ray wraps with a modulus a hair above 1, so that a value of exactly 1 (the
-    // centre of a spherical pattern) keeps the last map entry; the conformance suite shows
-    // the hair is below 1e-6 (gradient at 1.75 prints 0.750000). Most values are inside
-    // the modulus already, where the remainder (a library call) would leave them as they are.
-    const MODULUS: f64 = 1.000_000_1;
+    // Most values are inside the modulus already, where the remainder would leave them as
+    // they are.
     if v.abs() >= MODULUS {
-        v %= MODULUS;
+        v = wrap(v);
     }
     if v < 0.0 {
         v += 1.0;
@@ -512,6 +547,54 @@ mod tests {
             assert_eq!(floor(x).to_bits(), x.floor().to_bits(), "{x}");
         }
         assert!(floor(f64::NAN).is_nan());
+    }
+
+    #[test]
+    fn is_odd_is_rem_euclid_of_two() {
+        for x in [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            2.0,
+            -3.0,
+            1e15 + 1.0,
+            -1e15 - 1.0,
+            9_007_199_254_740_991.0,
+            -9_007_199_254_740_991.0,
+            9_007_199_254_740_992.0,
+            1e300,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ] {
+            assert_eq!(is_odd(x), x.rem_euclid(2.0) == 1.0, "{x}");
+        }
+    }
+
+    #[test]
+    fn wrap_is_the_remainder() {
+        let mut values = vec![
+            MODULUS,
+            -MODULUS,
+            2.0 * MODULUS,
+            -4.0 * MODULUS,
+            1023.0 * MODULUS,
+            1024.0 * MODULUS,
+            1e300,
+            -1e-300,
+            0.0,
+            -0.0,
+        ];
+        // Values over a few periods, either side of the multiples of the modulus.
+        let mut x: f64 = -40.0;
+        while x < 40.0 {
+            values.extend([x, f64::from_bits(x.to_bits() + 1), x * MODULUS]);
+            x += 0.013_7;
+        }
+        for v in values {
+            assert_eq!(wrap(v).to_bits(), (v % MODULUS).to_bits(), "{v}");
+        }
     }
 
     fn value(kind: PatternKind, p: DVec3) -> PatternValue {
