@@ -152,81 +152,118 @@ impl Medium {
         }
         exp(-sum * length / f64::from(steps))
     }
+}
 
-    /// The media along `ray` (of unit direction) from `t0` to `t1`. `splits` are the
-    /// places where lights' beams begin or end, in ascending order; `seed` fixes the
-    /// jitter; `lighting` lists the light arriving at a point.
-    pub fn passage(
-        &self,
-        ray: &Ray,
-        (t0, t1): (f64, f64),
-        splits: &[f64],
-        seed: u64,
-        lighting: &mut Lighting<'_>,
-    ) -> Passage {
-        if !t0.is_finite() || !t1.is_finite() || t1 <= t0 {
-            return Passage::CLEAR;
+/// The media `media` (at least one) along `ray` (of unit direction) from `t0` to `t1`,
+/// sampled together as POV-Ray does: each sample adds up their emission, scattering and
+/// extinction, so that what one medium scatters is dimmed by all of them on its way to
+/// the eye. The sampling method, samples and jitter are those of the first medium with
+/// the most intervals, the refinement threshold the smallest. `splits` are the places
+/// where lights' beams begin or end, in ascending order; `seed` fixes the jitter;
+/// `lighting` lists the light arriving at a point.
+pub fn passage(
+    media: &[&Medium],
+    ray: &Ray,
+    (t0, t1): (f64, f64),
+    splits: &[f64],
+    seed: u64,
+    lighting: &mut Lighting<'_>,
+) -> Passage {
+    let Some(&first) = media.first() else {
+        return Passage::CLEAR;
+    };
+    if !t0.is_finite() || !t1.is_finite() || t1 <= t0 {
+        return Passage::CLEAR;
+    }
+    let lead = media.iter().fold(first, |lead, m| {
+        if m.intervals > lead.intervals {
+            m
+        } else {
+            lead
         }
-        let mut run = Run {
-            medium: self,
-            ray,
-            lighting,
-            incident: Vec::new(),
-            transmittance: DVec3::ONE,
-            added: DVec3::ZERO,
-        };
-        let mut start = t0;
-        let bounds = splits
-            .iter()
-            .copied()
-            .filter(|&t| t > t0 && t < t1)
-            .chain(std::iter::once(t1));
-        for (part, end) in bounds.enumerate() {
-            let seed = seed ^ (part as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15);
-            match self.method {
-                3 => run.adaptive(start, end, seed),
-                _ => run.midpoints(start, end, seed),
-            }
-            start = end;
+    });
+    let aa_threshold = media
+        .iter()
+        .map(|m| m.aa_threshold)
+        .fold(f64::INFINITY, f64::min);
+    let mut run = Run {
+        media,
+        lead,
+        aa_threshold,
+        ray,
+        lighting,
+        incident: Vec::new(),
+        densities: Vec::with_capacity(media.len()),
+        transmittance: DVec3::ONE,
+        added: DVec3::ZERO,
+    };
+    let mut start = t0;
+    let bounds = splits
+        .iter()
+        .copied()
+        .filter(|&t| t > t0 && t < t1)
+        .chain(std::iter::once(t1));
+    for (part, end) in bounds.enumerate() {
+        let seed = seed ^ (part as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15);
+        match lead.method {
+            3 => run.adaptive(start, end, seed),
+            _ => run.midpoints(start, end, seed),
         }
-        Passage {
-            transmittance: run.transmittance,
-            added: run.added,
-        }
+        start = end;
+    }
+    Passage {
+        transmittance: run.transmittance,
+        added: run.added,
     }
 }
 
 /// One integration along a ray: the light added and the transmittance so far.
 struct Run<'a, 'l> {
-    medium: &'a Medium,
+    media: &'a [&'a Medium],
+    /// The medium whose sampling settings the run follows.
+    lead: &'a Medium,
+    aa_threshold: f64,
     ray: &'a Ray,
     lighting: &'a mut Lighting<'l>,
     incident: Vec<Incident>,
+    /// Each medium's density at the current sample.
+    densities: Vec<DVec3>,
     transmittance: DVec3,
     added: DVec3,
 }
 
 impl Run<'_, '_> {
     fn point(&mut self, at: f64) -> Point {
-        let medium = self.medium;
         let p = self.ray.at(at);
-        let density = medium.density(p);
-        let mut source = density * medium.emission;
-        if let Some(s) = medium.scattering
-            && s.colour != DVec3::ZERO
-            && density != DVec3::ZERO
-        {
+        self.densities.clear();
+        let mut source = DVec3::ZERO;
+        let mut extinction = DVec3::ZERO;
+        let mut scatters = false;
+        for medium in self.media {
+            let density = medium.density(p);
+            source += density * medium.emission;
+            extinction += medium.extinction(density);
+            scatters |= density != DVec3::ZERO
+                && medium.scattering.is_some_and(|s| s.colour != DVec3::ZERO);
+            self.densities.push(density);
+        }
+        if scatters {
             self.incident.clear();
             (self.lighting)(p, &mut self.incident);
-            let mut light = DVec3::ZERO;
-            for (towards, colour) in &self.incident {
-                light += *colour * phase(s.kind, self.ray.direction.dot(*towards));
+            for (medium, density) in self.media.iter().zip(&self.densities) {
+                let Some(s) = medium.scattering else {
+                    continue;
+                };
+                let mut light = DVec3::ZERO;
+                for (towards, colour) in &self.incident {
+                    light += *colour * phase(s.kind, self.ray.direction.dot(*towards));
+                }
+                source += *density * s.colour * light;
             }
-            source += density * s.colour * light;
         }
         Point {
             at,
-            extinction: medium.extinction(density),
+            extinction,
             source,
         }
     }
@@ -242,7 +279,7 @@ impl Run<'_, '_> {
 
     /// Method 3: equal steps refined where their ends disagree.
     fn adaptive(&mut self, t0: f64, t1: f64, seed: u64) {
-        let medium = self.medium;
+        let medium = self.lead;
         let steps = (medium.samples / 2).max(1) + 1;
         let width = (t1 - t0) / f64::from(steps);
         let mut previous = self.point(t0);
@@ -260,8 +297,8 @@ impl Run<'_, '_> {
     fn refine(&mut self, a: &Point, b: &Point, level: u32) {
         let differs = (a.source - b.source).abs().element_sum()
             + (a.extinction - b.extinction).abs().element_sum()
-            > self.medium.aa_threshold;
-        if level < self.medium.aa_level && differs {
+            > self.aa_threshold;
+        if level < self.lead.aa_level && differs {
             let middle = self.point((a.at + b.at) * 0.5);
             self.refine(a, &middle, level + 1);
             self.refine(&middle, b, level + 1);
@@ -273,7 +310,7 @@ impl Run<'_, '_> {
     /// Methods 1 and 2: one sample in each of `intervals × samples` equal steps, in its
     /// middle (method 2, moved by the jitter) or anywhere in it (method 1).
     fn midpoints(&mut self, t0: f64, t1: f64, seed: u64) {
-        let medium = self.medium;
+        let medium = self.lead;
         let intervals = if medium.method == 1 {
             medium.intervals
         } else {
@@ -342,7 +379,7 @@ mod tests {
 
     fn through(m: &Medium, length: f64) -> Passage {
         let ray = Ray::new(DVec3::ZERO, DVec3::Z);
-        m.passage(&ray, (0.0, length), &[], 1, &mut |_, _| {})
+        passage(&[m], &ray, (0.0, length), &[], 1, &mut |_, _| {})
     }
 
     #[test]
