@@ -31,7 +31,7 @@ impl BinOp {
     /// POV-Ray's operators, applied to one component. `=` and `!=` allow EPSILON, and so
     /// do `<=` and `>=` (as "less or equal"); `<` and `>` are exact; logic treats anything
     /// within EPSILON of zero as false.
-    fn apply(self, a: f64, b: f64) -> f64 {
+    pub(super) fn apply(self, a: f64, b: f64) -> f64 {
         let equal = (a - b).abs() <= EPSILON;
         let truth = |t: bool| f64::from(u8::from(t));
         match self {

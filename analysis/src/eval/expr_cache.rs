@@ -13,7 +13,7 @@
 
 use super::Evaluator;
 use super::builtins::{extreme, float_function, float_function2, refused_argument};
-use super::expr::{BinOp, combined, component, is_true, logical_not, negated};
+use super::expr::{BinOp, combined, component, is_true, logical_not};
 use super::symbols::Symbol;
 use super::tokens::{Cond, FileId, FrameKind, RawToken};
 use super::value::{Terms, Value};
@@ -49,9 +49,36 @@ struct Compiled {
     end: usize,
 }
 
+/// A float, vector or colour as a replay works it out: copied freely, with nothing to drop.
+#[derive(Debug, Clone, Copy)]
+enum Number {
+    Float(f64),
+    Vector(Terms),
+    Colour(Terms),
+}
+
+impl Number {
+    fn of(value: &Value) -> Option<Number> {
+        match value {
+            Value::Float(v) => Some(Number::Float(*v)),
+            Value::Vector(t) => Some(Number::Vector(*t)),
+            Value::Colour(t) => Some(Number::Colour(*t)),
+            _ => None,
+        }
+    }
+
+    fn value(self) -> Value {
+        match self {
+            Number::Float(v) => Value::Float(v),
+            Number::Vector(t) => Value::Vector(t),
+            Number::Colour(t) => Value::Colour(t),
+        }
+    }
+}
+
 #[derive(Debug)]
 enum Node {
-    Value(Value),
+    Value(Number),
     Identifier(Symbol),
     Negate(Box<Node>),
     Not(Box<Node>),
@@ -144,7 +171,7 @@ impl Evaluator<'_> {
         if self.steps + steps >= self.options.budgets.steps {
             return None;
         }
-        let value = self.replay(&compiled.node)?;
+        let value = self.replay(&compiled.node)?.value();
         self.steps += steps;
         if given_back {
             self.pushed.clear();
@@ -187,7 +214,7 @@ impl Evaluator<'_> {
         if self.steps + steps >= self.options.budgets.steps {
             return None;
         }
-        let value = accept(self.replay(&compiled.node)?)?;
+        let value = accept(self.replay(&compiled.node)?.value())?;
         self.steps += steps;
         self.frames.last_mut()?.pos = end;
         Some(value)
@@ -218,28 +245,41 @@ impl Evaluator<'_> {
         })
     }
 
-    fn replay(&self, node: &Node) -> Option<Value> {
+    fn replay(&self, node: &Node) -> Option<Number> {
         Some(match node {
-            Node::Value(value) => value.clone(),
+            Node::Value(number) => *number,
             Node::Identifier(symbol) => self.numeric_identifier(*symbol)?,
-            Node::Negate(operand) => negated(self.replay(operand)?).ok()?,
-            Node::Not(operand) => logical_not(self.replay(operand)?).ok()?,
+            // As `negated` does.
+            Node::Negate(operand) => match self.replay(operand)? {
+                Number::Float(v) => Number::Float(-v),
+                Number::Vector(mut t) => {
+                    t.c.iter_mut().for_each(|c| *c = -*c);
+                    Number::Vector(t)
+                }
+                Number::Colour(mut t) => {
+                    t.c.iter_mut().for_each(|c| *c = -*c);
+                    Number::Colour(t)
+                }
+            },
+            Node::Not(operand) => Number::of(&logical_not(self.replay(operand)?.value()).ok()?)?,
             Node::Binary(op, operands) => {
                 let [left, right] = &**operands;
-                let left = self.replay(left)?;
-                combined(*op, left, self.replay(right)?).ok()?
+                match (self.replay(left)?, self.replay(right)?) {
+                    (Number::Float(a), Number::Float(b)) => Number::Float(op.apply(a, b)),
+                    (a, b) => Number::of(&combined(*op, a.value(), b.value()).ok()?)?,
+                }
             }
             Node::Component(operand, item) => {
-                let value = self.replay(operand)?;
+                let value = self.replay(operand)?.value();
                 let terms = value.terms()?;
-                Value::Float(component(&value, terms, *item)?.ok()?)
+                Number::Float(component(&value, terms, *item)?.ok()?)
             }
             Node::Vector(components) => {
                 let mut c = [0.0; 5];
                 for (slot, component) in c.iter_mut().zip(components) {
                     *slot = self.replay_float(component)?;
                 }
-                Value::Vector(Terms::new(&c[..components.len()]))
+                Number::Vector(Terms::new(&c[..components.len()]))
             }
             Node::Choice(parts) => {
                 let [condition, a, b] = &**parts;
@@ -253,40 +293,39 @@ impl Evaluator<'_> {
                 if refused_argument(*kind, v).is_some() {
                     return None;
                 }
-                Value::Float(f(v))
+                Number::Float(f(v))
             }
             Node::Function2(kind, arguments) => {
                 let [a, b] = &**arguments;
                 let a = self.replay_float(a)?;
                 let b = self.replay_float(b)?;
-                Value::Float(float_function2(*kind, a, b).ok()?)
+                Number::Float(float_function2(*kind, a, b).ok()?)
             }
             Node::Extreme(kind, arguments) => {
                 let mut values = Vec::with_capacity(arguments.len());
                 for argument in arguments {
                     values.push(self.replay_float(argument)?);
                 }
-                Value::Float(extreme(*kind, &values))
+                Number::Float(extreme(*kind, &values))
             }
         })
     }
 
     fn replay_float(&self, node: &Node) -> Option<f64> {
         match self.replay(node)? {
-            Value::Float(v) => Some(v),
+            Number::Float(v) => Some(v),
             _ => None,
         }
     }
 
     /// The value of the identifier `symbol` when it holds a float, vector or colour.
-    fn numeric_identifier(&self, symbol: Symbol) -> Option<Value> {
+    fn numeric_identifier(&self, symbol: Symbol) -> Option<Number> {
         let slot = self
             .scopes
             .iter()
             .rev()
             .find_map(|scope| scope.get(&symbol))?;
-        let value = slot.borrow();
-        value.is_numeric().then(|| value.clone())
+        Number::of(&slot.borrow())
     }
 }
 
@@ -432,7 +471,7 @@ impl Compiler<'_, '_> {
     fn primary(&mut self) -> Option<Node> {
         let token = self.bump()?;
         match token.kind {
-            NUMBER => Some(Node::Value(Value::Float(self.text(token).parse().ok()?))),
+            NUMBER => Some(Node::Value(Number::Float(self.text(token).parse().ok()?))),
             L_PAREN => {
                 let node = self.full()?;
                 self.eat(R_PAREN).then_some(node)
@@ -450,7 +489,7 @@ impl Compiler<'_, '_> {
             VERSION_KW => None,
             kind => {
                 if let Some(value) = self.evaluator.builtin_constant(kind) {
-                    return Some(Node::Value(value));
+                    return Some(Node::Value(Number::of(&value)?));
                 }
                 self.function_call(kind)
             }
