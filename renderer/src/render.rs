@@ -47,7 +47,14 @@ pub fn render_with_warnings(
         corners: options.antialias && options.aa_method == 2,
     };
     radiosity::pretrace(&mut world, &camera, &frame);
-    let working = match scene.settings.assumed_gamma {
+    // A scene of `#version 3.7` or later that gives no assumed_gamma gets 1.0, as POV-Ray
+    // 3.7 gives it (with a warning; measured: such a plane of rgb 0.5 lit head-on is written
+    // as 187, not 127); older scenes turn gamma handling off.
+    let assumed_gamma = scene
+        .settings
+        .assumed_gamma
+        .or_else(|| scene.version.filter(|v| *v >= 3.7).map(|_| 1.0));
+    let working = match assumed_gamma {
         Some(g) => Curve::from_gamma(Gamma::Power(g)),
         None => Curve::Identity,
     };
@@ -82,9 +89,9 @@ pub fn render_with_warnings(
         }
     };
     let output = Output {
-        // Scenes without assumed_gamma are legacy scenes: POV-Ray 3.7 turns gamma
+        // Legacy scenes (before 3.7, without assumed_gamma): POV-Ray 3.7 turns gamma
         // handling off for them and writes working values as they are.
-        legacy: scene.settings.assumed_gamma.is_none(),
+        legacy: assumed_gamma.is_none(),
         working,
         file: output_curve(Curve::from_gamma(options.file_gamma.unwrap_or(Gamma::Srgb))),
         alpha: options.output_alpha,
@@ -581,8 +588,30 @@ mod tests {
     }
 
     #[test]
+    fn scenes_of_3_7_without_assumed_gamma_take_1() {
+        // POV-Ray 3.7 gives a `#version 3.7` scene without assumed_gamma 1.0 (with a
+        // warning), so its render is that of the scene with `assumed_gamma 1`.
+        let options = RenderOptions {
+            width: 8,
+            height: 6,
+            antialias: false,
+            ..RenderOptions::default()
+        };
+        let unset = render(&orange_sphere(), &options).unwrap();
+        let mut one = orange_sphere();
+        one.settings.assumed_gamma = Some(1.0);
+        let one = render(&one, &options).unwrap();
+        assert_eq!(unset.pixel(4, 3), one.pixel(4, 3));
+        assert!(unset.pixel(4, 3)[2] > 0.3, "{:?}", unset.pixel(4, 3));
+    }
+
+    #[test]
     fn low_quality_shows_pigments_under_full_ambient() {
-        let scene = orange_sphere();
+        // A legacy scene (no #version, no assumed_gamma): gamma is off.
+        let scene = Scene {
+            version: None,
+            ..orange_sphere()
+        };
         let options = RenderOptions {
             width: 8,
             height: 6,
@@ -591,7 +620,7 @@ mod tests {
             ..RenderOptions::default()
         };
         let image = render(&scene, &options).unwrap();
-        // Legacy gamma is off in this scene (no assumed_gamma): the pigment as it is.
+        // The pigment as it is.
         assert_eq!(image.pixel(4, 3), [0.8, 0.5, 0.2, 1.0]);
     }
 }

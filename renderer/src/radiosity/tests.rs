@@ -35,8 +35,8 @@ fn samples_taken(text: &str) -> Vec<usize> {
     world.radiosity.expect("radiosity").sample_counts()
 }
 
-/// Renders `text` at 24 × 18 without antialiasing; the scenes set no `assumed_gamma`, so
-/// pixels hold the shading's own values.
+/// Renders `text` at 24 × 18 without antialiasing into a file of gamma 1; the scenes of
+/// 3.7 set no `assumed_gamma` (and so have 1.0), so pixels hold the shading's own values.
 fn render_scene(text: &str, quality: u8) -> crate::Image {
     let scene = evaluate(text);
     let options = RenderOptions {
@@ -44,6 +44,7 @@ fn render_scene(text: &str, quality: u8) -> crate::Image {
         height: 18,
         antialias: false,
         quality,
+        file_gamma: Some(crate::options::Gamma::Power(1.0)),
         ..RenderOptions::default()
     };
     render(&scene, &options).expect("the scene renders")
