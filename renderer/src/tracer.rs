@@ -196,7 +196,7 @@ impl<'w> Tracer<'w> {
                 hit.leaf.light_set,
             ),
         };
-        if self.world.participating {
+        if self.world.participating && !self.gathering_without_media() {
             return self.participate(ray, depth, light_set, sample);
         }
         sample

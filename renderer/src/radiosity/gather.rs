@@ -208,6 +208,16 @@ impl<'w> Tracer<'w> {
         }
     }
 
+    /// Whether the current ray belongs to a radiosity gathering that sees no media or fog
+    /// (radiosity's `media` off, the default), not even behind the clear surfaces it
+    /// passes: POV-Ray's mesh_camera demo room lights its walls through media that its
+    /// radiosity leaves out.
+    pub(crate) fn gathering_without_media(&self) -> bool {
+        self.radiosity
+            .as_ref()
+            .is_some_and(|w| w.bounce > 0 && !w.radiosity.settings.media)
+    }
+
     /// Whether the current ray is a pretrace camera ray, whose own colour nobody sees.
     pub(crate) fn vain_pretrace(&self) -> bool {
         self.radiosity
