@@ -15,7 +15,7 @@ use crate::dispersion::Spectra;
 use crate::fast_math;
 use crate::interior::Interior;
 use crate::light::{Incoming, Light};
-use crate::material::Layer;
+use crate::material::{Layer, Pigment};
 use crate::object::{Hit, Leaf, Query};
 use crate::photons::{GatherScratch, PhotonMap};
 use crate::ray::{Ray, RayKind};
@@ -215,14 +215,20 @@ impl<'w> Tracer<'w> {
             && let Some(layer) = leaf.opaque_layer()
             && self.shades_plainly()
         {
-            let at = leaf.texture_point(p, hit.part, ray);
             let mut normal = leaf.normal(p, hit.part);
             if normal.dot(ray.direction) > 0.0 {
                 normal = -normal;
             }
-            let pigment = match at.facing {
-                Some(_) => layer.pigment.colour_at(&at.with_normal(normal)),
-                None => layer.pigment.colour_at(&at),
+            let pigment = match &layer.pigment {
+                // The same everywhere: no texture point to find.
+                Pigment::Solid(colour) => *colour,
+                pigment => {
+                    let at = leaf.texture_point(p, hit.part, ray);
+                    match at.facing {
+                        Some(_) => pigment.colour_at(&at.with_normal(normal)),
+                        None => pigment.colour_at(&at),
+                    }
+                }
             };
             // The pigment shows as a plain surface's colour wherever it is opaque, which
             // its material says it is everywhere.
