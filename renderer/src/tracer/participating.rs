@@ -195,6 +195,14 @@ mod tests {
     use crate::tracer::centre;
     use glam::DVec3;
 
+    /// Asserts that every channel of `seen` lies within `tolerance` of `level`.
+    fn assert_grey(seen: DVec3, level: f64, tolerance: f64) {
+        assert!(
+            (seen - DVec3::splat(level)).abs().max_element() < tolerance,
+            "{seen} against {level}"
+        );
+    }
+
     #[test]
     fn scenes_without_atmosphere_or_media_skip_the_check() {
         let plain = world("sphere { 0, 1 pigment { rgb 1 } }");
@@ -237,18 +245,12 @@ mod tests {
         // POV-Ray 3.7 shows 0.2 for this glow against the background: 2e10 units of it.
         let glow = "camera { location <0, 0, -5> look_at 0 } media { emission 1e-11 }";
         let seen = centre(&world(glow), glow);
-        assert!(
-            (seen - DVec3::splat(0.2)).abs().max_element() < 1e-9,
-            "{seen}"
-        );
+        assert_grey(seen, 0.2, 1e-9);
         // And as much absorption lets exp(-0.2) of the background through.
         let dim = "camera { location <0, 0, -5> look_at 0 } background { rgb 1 } \
                    media { absorption 1e-11 }";
         let seen = centre(&world(dim), dim);
-        assert!(
-            (seen - DVec3::splat((-0.2f64).exp())).abs().max_element() < 1e-9,
-            "{seen}"
-        );
+        assert_grey(seen, (-0.2f64).exp(), 1e-9);
     }
 
     #[test]
@@ -281,10 +283,7 @@ mod tests {
              interior { media { absorption 0.5 } } }";
         let seen = centre(&world(scene), scene);
         let expected = (-1f64).exp();
-        assert!(
-            (seen - DVec3::splat(expected)).abs().max_element() < 1e-6,
-            "{seen}"
-        );
+        assert_grey(seen, expected, 1e-6);
     }
 
     #[test]
@@ -302,10 +301,7 @@ mod tests {
         let expected: f64 = (0..6)
             .map(|k| (-0.05 * f64::from(k)).exp() * 0.5 * (source(k) + source(k + 1)) / 2.0)
             .sum();
-        assert!(
-            (seen - DVec3::splat(expected)).abs().max_element() < 1e-6,
-            "{seen} {expected}"
-        );
+        assert_grey(seen, expected, 1e-6);
     }
 
     #[test]
@@ -354,6 +350,6 @@ mod tests {
         assert_eq!(centre(&world(&solid), &solid), DVec3::ZERO);
         let hollow = scene("hollow");
         let glow = centre(&world(&hollow), &hollow);
-        assert!((glow - DVec3::ONE).abs().max_element() < 1e-9, "{glow}");
+        assert_grey(glow, 1.0, 1e-9);
     }
 }
