@@ -462,9 +462,6 @@ impl Evaluator<'_> {
                 if !(1..=27).contains(&number) {
                     return Err(self.error_at(keyword, "the tiling number must be from 1 to 27"));
                 }
-                if !crate::pattern::tiling::supported(number as u8) {
-                    return Err(self.unsupported(keyword, &format!("tiling {number}")));
-                }
                 PatternKind::Tiling(number as u8)
             }
             TRIANGULAR_KW => PatternKind::Triangular,
@@ -1582,8 +1579,7 @@ mod tests {
         ));
     }
 
-    /// POV-Ray numbers its tilings 1 to 27 and refuses any other number; 25 to 27 are
-    /// not drawn yet.
+    /// POV-Ray numbers its tilings 1 to 27 and refuses any other number.
     #[test]
     fn tiling_numbers_are_checked() {
         assert_eq!(
@@ -1591,9 +1587,10 @@ mod tests {
             "the tiling number must be from 1 to 27"
         );
         assert_eq!(
-            evaluate_err("plane { y, 0 pigment { tiling 25 } }"),
-            "not supported yet: tiling 25"
+            evaluate_err("plane { y, 0 pigment { tiling 0 } }"),
+            "the tiling number must be from 1 to 27"
         );
+        evaluate_ok("plane { y, 0 pigment { tiling 25 } normal { tiling 27 } }");
         evaluate_ok("plane { y, 0 pigment { tiling 24.9 } normal { tiling 3 } }");
     }
 

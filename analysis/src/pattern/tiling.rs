@@ -6,22 +6,12 @@
 //! `(a + b√2)/4`, `(a + b√3)/4` or `(a + b√3)/12`, and so reproduces POV-Ray's values to
 //! 1e-5. Here a period's tiles are placed so that every point of one period cell finds its
 //! tile among a short list: the cell is cut into a grid, and each grid square lists the
-//! few tiles that reach into it. Tilings 26 and 27 are Penrose's kites and darts and his
-//! rhombs, aperiodic: they are built by their own rules in `penrose`.
-//!
-//! Tiling 25, Penrose's first tiling (pentagons of three types 0, 1 and 2, stars 3, boats 4
-//! and diamonds 5), is not supported yet. What POV-Ray's values show of it: pentagons of
-//! edge 1, one of type 0 centred on the origin with corners towards 36° + k 72°, five-fold
-//! symmetric round it, bevels about 0.29 wide; it is its own substitution scaled by φ² and
-//! turned by 36° (a pentagon's children: a turned pentagon at its centre, five at its
-//! corners, half diamonds or the points of stars and boats at its edges). It is no
-//! regrouping of the Robinson triangles of `penrose`: the corners of its central pentagon,
-//! 0.85 from the origin, are no corners of theirs at any scale φ^k. Its pentagons of types
-//! 1 and 2 carry a direction that their children show but their shape does not, and tiles
-//! lie astride two parents, so its substitution needs that direction and those shared
-//! tiles worked out for every tile type before a point can find its tile.
+//! few tiles that reach into it. Tilings 25 to 27 are Penrose's, aperiodic, and built by
+//! their own substitution rules: 25, his first tiling of pentagons, stars, boats and
+//! diamonds, in `pentagons`; 26 and 27, his kites and darts and his rhombs, in `penrose`.
 
 mod penrose;
+mod pentagons;
 
 use super::floor;
 use glam::{DVec2, DVec3};
@@ -32,18 +22,14 @@ use std::sync::OnceLock;
 /// How many tilings `tilings.txt` holds: POV-Ray's periodic tilings, 1 to 24.
 const TILINGS: usize = 24;
 
-/// The Penrose tiling that POV-Ray's tiling `number` is, if it is one we draw.
+/// Which of the Penrose tilings built from Robinson triangles POV-Ray's tiling `number`
+/// is, if it is one of them.
 fn penrose(number: u8) -> Option<Penrose> {
     match number {
         26 => Some(Penrose::KitesAndDarts),
         27 => Some(Penrose::Rhombs),
         _ => None,
     }
-}
-
-/// Whether POV-Ray's tiling `number` is implemented.
-pub fn supported(number: u8) -> bool {
-    (1..=TILINGS).contains(&usize::from(number)) || penrose(number).is_some()
 }
 
 /// An edge's line scaled by its ramp width: the ramp is `normal . p - offset`, 0 on the
@@ -100,7 +86,7 @@ struct Tiling {
     candidates: Vec<Tile>,
 }
 
-/// Tiling `number` (which must be `supported`), made ready the first time a scene uses
+/// Periodic tiling `number` (1 to 24), made ready the first time a scene uses
 /// it: a scene uses few of them.
 fn tiling(number: u8) -> &'static Tiling {
     static READY: [OnceLock<Tiling>; TILINGS] = [const { OnceLock::new() }; TILINGS];
@@ -163,9 +149,12 @@ fn layouts(text: &str) -> Vec<Layout> {
     layouts
 }
 
-/// The value of `tiling number` at `p` (y is ignored), in 0..=1. `number` must be
-/// `supported`.
+/// The value of `tiling number` at `p` (y is ignored), in 0..=1. `number` must be one
+/// of POV-Ray's, 1 to 27.
 pub fn value(number: u8, p: DVec3) -> f64 {
+    if number == 25 {
+        return pentagons::value(p);
+    }
     if let Some(penrose) = penrose(number) {
         return penrose::value(penrose, p);
     }

@@ -29,7 +29,11 @@
 use glam::{DVec2, DVec3};
 
 /// The golden ratio φ.
-const PHI: f64 = 1.618_033_988_749_895;
+pub(super) const PHI: f64 = 1.618_033_988_749_895;
+
+/// The rhombs' bevel width, measured on POV-Ray's values (no closed form found); `tiling
+/// 25`'s pentagons, stars, boats and diamonds have the same.
+pub(super) const RHOMBS_BEVEL: f64 = 0.291_537_656;
 
 /// The two Penrose tilings.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -46,7 +50,7 @@ impl Penrose {
     fn bevel(self) -> f64 {
         match self {
             Penrose::KitesAndDarts => 1.0 / 4.46,
-            Penrose::Rhombs => 0.291_537_656,
+            Penrose::Rhombs => RHOMBS_BEVEL,
         }
     }
 }
@@ -161,7 +165,7 @@ fn descend(tiling: Penrose, deflations: u32, legs: f64, q: DVec2) -> Triangle {
 }
 
 /// The directions of the wheel's spokes, `k 36°` from +x towards +z.
-const SPOKES: [DVec2; 10] = {
+pub(super) const SPOKES: [DVec2; 10] = {
     const C36: f64 = 0.809_016_994_374_947_5;
     const S36: f64 = 0.587_785_252_292_473_1;
     const C72: f64 = 0.309_016_994_374_947_45;
