@@ -58,12 +58,16 @@ fn best_native(scene: &Path) -> Duration {
         .expect("three runs")
 }
 
-/// POV-Ray's "Parse Time" in CPU seconds, the best of three runs; `None` if it fails.
+/// POV-Ray's "Parse Time" in CPU seconds, the best of three runs; `None` if it fails. It
+/// runs in the temporary directory: scenes that `#write` files (the mesh_camera demos
+/// write their lens meshes) write them into POV-Ray's current directory.
 fn povray_parse_seconds(scene: &Path) -> Option<f64> {
     let out = std::env::temp_dir().join("eval-benchmark-povray.png");
+    let scene = std::path::absolute(scene).ok()?;
     (0..3)
         .map(|_| {
             let run = Command::new("povray")
+                .current_dir(std::env::temp_dir())
                 .arg(format!("+I{}", scene.display()))
                 .arg(format!("+O{}", out.display()))
                 .args(["+FN", "-D", "-V", "+WT1", "-A"])
