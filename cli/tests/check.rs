@@ -9,7 +9,10 @@ use std::process::{Command, Output};
 fn project() -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
     let files = [
-        ("scenes/clean.pov", "#version 3.7;\nsphere { 0, 1 }\n"),
+        (
+            "scenes/clean.pov",
+            "#version 3.7;\nglobal_settings { assumed_gamma 1 }\nsphere { 0, 1 }\n",
+        ),
         (
             "scenes/more/lint.pov",
             "#include \"parts.inc\"\n#declare Unused = 1;\nsphere { 0, Radius }\n",
@@ -57,10 +60,14 @@ fn warnings_alone_pass_unless_denied() {
                 1 | #include "parts.inc"
                   | ^
             note: add `#version 3.7;` as the scene's first line
+            scenes/more/lint.pov:1:1: warning: assumed_gamma is not set, so colours are not gamma corrected, as in scenes older than POV-Ray 3.7
+                1 | #include "parts.inc"
+                  | ^
+            note: add `assumed_gamma 1.0` to global_settings
             scenes/more/lint.pov:2:10: warning: 'Unused' is declared by #declare but never used
                 2 | #declare Unused = 1;
                   |          ^~~~~~
-            checked 2 scenes: 0 errors, 2 warnings
+            checked 2 scenes: 0 errors, 3 warnings
         "#]],
     );
     check(
@@ -72,10 +79,14 @@ fn warnings_alone_pass_unless_denied() {
                 1 | #include "parts.inc"
                   | ^
             note: add `#version 3.7;` as the scene's first line
+            scenes/more/lint.pov:1:1: warning: assumed_gamma is not set, so colours are not gamma corrected, as in scenes older than POV-Ray 3.7
+                1 | #include "parts.inc"
+                  | ^
+            note: add `assumed_gamma 1.0` to global_settings
             scenes/more/lint.pov:2:10: warning: 'Unused' is declared by #declare but never used
                 2 | #declare Unused = 1;
                   |          ^~~~~~
-            checked 2 scenes: 0 errors, 2 warnings
+            checked 2 scenes: 0 errors, 3 warnings
         "#]],
     );
 }
@@ -108,67 +119,87 @@ fn json_format() {
         ],
         1,
         expect![[r#"
-        [
-          {
-            "code": "missing-version",
-            "file": "scenes/more/lint.pov",
-            "message": "this scene has no #version directive; assuming #version 3.7",
-            "notes": [
-              "add `#version 3.7;` as the scene's first line"
-            ],
-            "range": {
-              "end": {
-                "column": 1,
-                "line": 1
+            [
+              {
+                "code": "missing-version",
+                "file": "scenes/more/lint.pov",
+                "message": "this scene has no #version directive; assuming #version 3.7",
+                "notes": [
+                  "add `#version 3.7;` as the scene's first line"
+                ],
+                "range": {
+                  "end": {
+                    "column": 1,
+                    "line": 1
+                  },
+                  "start": {
+                    "column": 1,
+                    "line": 1
+                  }
+                },
+                "related": [],
+                "severity": "warning"
               },
-              "start": {
-                "column": 1,
-                "line": 1
-              }
-            },
-            "related": [],
-            "severity": "warning"
-          },
-          {
-            "code": "unused-declaration",
-            "file": "scenes/more/lint.pov",
-            "message": "'Unused' is declared by #declare but never used",
-            "notes": [],
-            "range": {
-              "end": {
-                "column": 16,
-                "line": 2
+              {
+                "code": "missing-assumed-gamma",
+                "file": "scenes/more/lint.pov",
+                "message": "assumed_gamma is not set, so colours are not gamma corrected, as in scenes older than POV-Ray 3.7",
+                "notes": [
+                  "add `assumed_gamma 1.0` to global_settings"
+                ],
+                "range": {
+                  "end": {
+                    "column": 1,
+                    "line": 1
+                  },
+                  "start": {
+                    "column": 1,
+                    "line": 1
+                  }
+                },
+                "related": [],
+                "severity": "warning"
               },
-              "start": {
-                "column": 10,
-                "line": 2
-              }
-            },
-            "related": [],
-            "severity": "warning"
-          },
-          {
-            "code": null,
-            "file": "broken/broken.pov",
-            "message": "undeclared identifier 'Raduis'",
-            "notes": [
-              "did you mean 'Radius'?"
-            ],
-            "range": {
-              "end": {
-                "column": 19,
-                "line": 3
+              {
+                "code": "unused-declaration",
+                "file": "scenes/more/lint.pov",
+                "message": "'Unused' is declared by #declare but never used",
+                "notes": [],
+                "range": {
+                  "end": {
+                    "column": 16,
+                    "line": 2
+                  },
+                  "start": {
+                    "column": 10,
+                    "line": 2
+                  }
+                },
+                "related": [],
+                "severity": "warning"
               },
-              "start": {
-                "column": 13,
-                "line": 3
+              {
+                "code": null,
+                "file": "broken/broken.pov",
+                "message": "undeclared identifier 'Raduis'",
+                "notes": [
+                  "did you mean 'Radius'?"
+                ],
+                "range": {
+                  "end": {
+                    "column": 19,
+                    "line": 3
+                  },
+                  "start": {
+                    "column": 13,
+                    "line": 3
+                  }
+                },
+                "related": [],
+                "severity": "error"
               }
-            },
-            "related": [],
-            "severity": "error"
-          }
-        ]
-    "#]],
+            ]
+        "#]],
         expect![""],
     );
 }
@@ -205,6 +236,7 @@ fn sarif_format() {
         .collect();
     expect![[r#"
         warning missing-version scenes/more/lint.pov:1: this scene has no #version directive; assuming #version 3.7
+        warning missing-assumed-gamma scenes/more/lint.pov:1: assumed_gamma is not set, so colours are not gamma corrected, as in scenes older than POV-Ray 3.7
         warning unused-declaration scenes/more/lint.pov:2: 'Unused' is declared by #declare but never used
         error error broken/broken.pov:3: undeclared identifier 'Raduis'"#]].assert_eq(&results.join("\n"));
 }
@@ -215,10 +247,11 @@ fn github_format() {
         &["check", "--format", "github", "scenes", "broken"],
         1,
         expect![[r#"
-        ::warning file=scenes/more/lint.pov,line=1,col=1,endLine=1,endColumn=1,title=povrayst (missing-version)::this scene has no #version directive; assuming #version 3.7%0Anote: add `#version 3.7;` as the scene's first line
-        ::warning file=scenes/more/lint.pov,line=2,col=10,endLine=2,endColumn=16,title=povrayst (unused-declaration)::'Unused' is declared by #declare but never used
-        ::error file=broken/broken.pov,line=3,col=13,endLine=3,endColumn=19,title=povrayst::undeclared identifier 'Raduis'%0Anote: did you mean 'Radius'?
-    "#]],
+            ::warning file=scenes/more/lint.pov,line=1,col=1,endLine=1,endColumn=1,title=povrayst (missing-version)::this scene has no #version directive; assuming #version 3.7%0Anote: add `#version 3.7;` as the scene's first line
+            ::warning file=scenes/more/lint.pov,line=1,col=1,endLine=1,endColumn=1,title=povrayst (missing-assumed-gamma)::assumed_gamma is not set, so colours are not gamma corrected, as in scenes older than POV-Ray 3.7%0Anote: add `assumed_gamma 1.0` to global_settings
+            ::warning file=scenes/more/lint.pov,line=2,col=10,endLine=2,endColumn=16,title=povrayst (unused-declaration)::'Unused' is declared by #declare but never used
+            ::error file=broken/broken.pov,line=3,col=13,endLine=3,endColumn=19,title=povrayst::undeclared identifier 'Raduis'%0Anote: did you mean 'Radius'?
+        "#]],
         expect![""],
     );
 }

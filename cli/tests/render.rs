@@ -5,6 +5,7 @@ use std::path::Path;
 use std::process::{Command, Output};
 
 const SCENE: &str = "#version 3.7;\n\
+    global_settings { assumed_gamma 1 }\n\
     camera { location <0, 0, -4> look_at 0 }\n\
     light_source { <2, 4, -3>, rgb 1 }\n\
     sphere { 0, 1 pigment { rgb <1, clock, 0> } }\n\

@@ -897,7 +897,7 @@ mod tests {
 
     /// A 4 x 3 render of a 3.7 scene made of `items`.
     fn render_small(items: &str, output_alpha: bool) -> Result<Rendered, Failure> {
-        let scene = format!("#version 3.7;\n{items}\n");
+        let scene = format!("#version 3.7; global_settings {{ assumed_gamma 1 }}\n{items}\n");
         let files = MemoryFiles::new().with("scene.pov", scene);
         let options = RenderOptions {
             width: 4,

@@ -88,6 +88,10 @@ fn render_prints_debug_output_and_warnings() {
             1 | #debug "rendering\n"
               | ^
         note: add `#version 3.7;` as the scene's first line
+        scene.pov:1:1: warning: assumed_gamma is not set, so colours are not gamma corrected, as in scenes older than POV-Ray 3.7
+            1 | #debug "rendering\n"
+              | ^
+        note: add `assumed_gamma 1.0` to global_settings
     "#]]
     .assert_eq(&stderr(&output));
 }
@@ -180,7 +184,7 @@ fn check_reports_every_file_and_its_debug_output() {
     let dir = scene_dir(&[
         (
             "good.pov",
-            "#version 3.7;\n#debug \"hello\\n\"\nsphere { 0, 1 }\n",
+            "#version 3.7; global_settings { assumed_gamma 1 }\n#debug \"hello\\n\"\nsphere { 0, 1 }\n",
         ),
         (
             "bad.pov",
@@ -213,7 +217,7 @@ fn check_reports_every_file_and_its_debug_output() {
 fn check_answers_geometric_queries_as_a_render_does() {
     let dir = scene_dir(&[(
         "scene.pov",
-        "#version 3.7;\n\
+        "#version 3.7; global_settings { assumed_gamma 1 }\n\
          #declare S = sphere { 0, 1 }\n\
          #declare P = trace(S, <0, 0, -5>, z);\n\
          #declare F = function { pattern { object { S } } }\n\
@@ -232,7 +236,7 @@ fn latin1_scenes_and_includes_are_read_as_povray_reads_them() {
     // "é" as the single byte 0xE9: not UTF-8, as many scenes written for POV-Ray are.
     std::fs::write(
         dir.path().join("scene.pov"),
-        b"#version 3.7;\n// caf\xe9\n#include \"grass.inc\"\n#debug concat(Name, \"\\n\")\n",
+        b"#version 3.7; global_settings { assumed_gamma 1 }\n// caf\xe9\n#include \"grass.inc\"\n#debug concat(Name, \"\\n\")\n",
     )
     .unwrap();
     std::fs::write(

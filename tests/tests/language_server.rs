@@ -60,7 +60,7 @@ fn diagnostics_follow_opens_and_edits_in_order() {
         &scene,
         "povray",
         1,
-        "#version 3.7;\n#declare Radius = 1;\nsphere { 0, Raduis }\n",
+        "#version 3.7; global_settings { assumed_gamma 1 }\n#declare Radius = 1;\nsphere { 0, Raduis }\n",
     );
     assert_eq!(
         summary(&server.diagnostics(&scene, Some(1))),
@@ -99,7 +99,7 @@ fn diagnostics_follow_opens_and_edits_in_order() {
 #[test]
 fn scenes_asking_geometric_questions_check_clean() {
     let (_dir, mut server, scene) = server_with_scene(
-        "#version 3.7;\n#declare S = sphere { 0, 1 }\n#declare P = trace(S, -5*z, z);\n\
+        "#version 3.7; global_settings { assumed_gamma 1 }\n#declare S = sphere { 0, 1 }\n#declare P = trace(S, -5*z, z);\n\
          #declare I = inside(S, 0);\n\
          object { S pigment { object { S rgb P.z, rgb I } } }\n",
     );

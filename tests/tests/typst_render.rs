@@ -171,7 +171,7 @@ fn warnings_reach_typst_as_text() {
     let doc = Document::new(&format!(
         "{IMPORT}#metadata(try-render(read(\"scene.pov\"), width: 4, height: 3).warnings) <result>\n"
     ))
-    .with_file("scene.pov", "#version 3.7;\n#warning \"careful\"\nsphere { 0, 1 }\n");
+    .with_file("scene.pov", "#version 3.7; global_settings { assumed_gamma 1 }\n#warning \"careful\"\nsphere { 0, 1 }\n");
     expect![[r#"
         scene.pov:2:1: warning: careful
             2 | #warning "careful"

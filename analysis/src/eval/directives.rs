@@ -66,6 +66,7 @@ impl Evaluator<'_> {
                 }
                 self.version = version;
                 self.version_set = true;
+                self.version_directive = Some((hash.file, hash.range().cover(keyword.range())));
                 Ok(())
             }
             DEBUG_KW | WARNING_KW | ERROR_KW | RENDER_KW | STATISTICS_KW => {

@@ -235,6 +235,8 @@ pub(crate) struct Evaluator<'a> {
     macro_depth: usize,
     version: f64,
     version_set: bool,
+    /// Where the last `#version` directive's keyword is, for warnings about the version.
+    version_directive: Option<(FileId, TextRange)>,
     warnings: Vec<Diagnostic>,
     messages: Vec<Message>,
     rng: rng::RandomStreams,
@@ -297,6 +299,7 @@ impl<'a> Evaluator<'a> {
             macro_depth: 0,
             version: options.version.unwrap_or(3.7),
             version_set: options.version.is_some(),
+            version_directive: None,
             warnings: Vec::new(),
             messages: Vec::new(),
             rng: rng::RandomStreams::default(),
@@ -349,7 +352,32 @@ impl<'a> Evaluator<'a> {
                 .with_note("add `#version 3.7;` as the scene's first line"),
             );
         }
+        if self.settings.assumed_gamma.is_none() {
+            let warning = self.missing_assumed_gamma(main);
+            self.warnings.push(warning);
+        }
         Ok(())
+    }
+
+    /// POV-Ray's warning for a scene without `assumed_gamma`, which decides how its
+    /// colours are read: a scene of version 3.7 or later works at gamma 1.0, an older one
+    /// (or one without `#version`) without gamma handling. It points at the `#version`
+    /// directive that decided, or at the scene's start.
+    fn missing_assumed_gamma(&self, main: &str) -> Diagnostic {
+        let message = if self.version_set && self.version >= 3.7 {
+            "assumed_gamma is not set in this POV-Ray 3.7 scene; taking assumed_gamma 1.0"
+        } else {
+            "assumed_gamma is not set, so colours are not gamma corrected, as in scenes older than POV-Ray 3.7"
+        };
+        let (file, range) = match self.version_directive {
+            Some((file, range)) if self.version_set => {
+                (self.files[file as usize].name.clone(), range)
+            }
+            _ => (main.to_owned(), TextRange::default()),
+        };
+        Diagnostic::warning(file, range, message)
+            .with_code("missing-assumed-gamma")
+            .with_note("add `assumed_gamma 1.0` to global_settings")
     }
 
     /// Loads a file once, by name: the caller's files first, then the standard includes.

@@ -314,7 +314,7 @@ pub fn place_with_importance(object: &mut Object, default: f64) {
 
 #[cfg(test)]
 mod tests {
-    use crate::eval::tests::{evaluate_37, evaluate_ok};
+    use crate::eval::tests::{self, evaluate_ok};
     use crate::scene::{Radiosity, Shape};
     use expect_test::{Expect, expect};
 
@@ -325,13 +325,9 @@ mod tests {
             .expect("radiosity on")
     }
 
-    /// The error and warnings, rendered as the front ends print them.
+    /// The error and warnings of a 3.7 scene, rendered as the front ends print them.
     fn check_diagnostics(text: &str, expect: Expect) {
-        let evaluation = evaluate_37(text);
-        expect.assert_eq(&syntax::diagnostic::render_human(
-            &evaluation.diagnostics,
-            &evaluation.sources,
-        ));
+        tests::check_diagnostics(&format!("#version 3.7;\n{text}"), expect);
     }
 
     #[test]
@@ -391,6 +387,10 @@ mod tests {
                 scene.pov:2:31: warning: minimum_reuse is more than half of maximum_reuse
                     2 | global_settings { radiosity { minimum_reuse 0.15 maximum_reuse 0.2 } }
                       |                               ^~~~~~~~~~~~~
+                scene.pov:1:1: warning: assumed_gamma is not set in this POV-Ray 3.7 scene; taking assumed_gamma 1.0
+                    1 | #version 3.7;
+                      | ^~~~~~~~
+                note: add `assumed_gamma 1.0` to global_settings
             "#]],
         );
         check_diagnostics(
@@ -451,6 +451,10 @@ mod tests {
                 scene.pov:2:31: warning: since POV-Ray 3.7, radiosity data is saved and loaded by command-line options; this load_file is ignored
                     2 | global_settings { radiosity { load_file "a.rad" } }
                       |                               ^~~~~~~~~
+                scene.pov:1:1: warning: assumed_gamma is not set in this POV-Ray 3.7 scene; taking assumed_gamma 1.0
+                    1 | #version 3.7;
+                      | ^~~~~~~~
+                note: add `assumed_gamma 1.0` to global_settings
             "#]],
         );
         check_diagnostics(

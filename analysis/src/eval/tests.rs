@@ -10,6 +10,15 @@ fn eval(text: &str) -> Evaluation {
     evaluate("scene.pov", &files, &EvalOptions::default())
 }
 
+/// Every diagnostic of a scene text, rendered as the front ends print them.
+pub(super) fn check_diagnostics(text: &str, expect: Expect) {
+    let evaluation = eval(text);
+    expect.assert_eq(&syntax::diagnostic::render_human(
+        &evaluation.diagnostics,
+        &evaluation.sources,
+    ));
+}
+
 /// The evaluation of a 3.7 scene text.
 pub(super) fn evaluate_37(text: &str) -> Evaluation {
     eval(&format!("#version 3.7;\n{text}"))
@@ -178,6 +187,34 @@ fn debug_axes_scene_evaluates() {
     assert_eq!(
         warnings,
         ["this scene has no #version directive; assuming #version 3.7"]
+    );
+}
+
+#[test]
+fn scenes_without_assumed_gamma_get_povrays_warning() {
+    // A 3.7 scene is read at gamma 1.0, an older one without gamma handling: POV-Ray 3.7
+    // warns of each, at the end of parsing.
+    check_diagnostics(
+        "#version 3.7;\nsphere { 0, 1 }\n",
+        expect![[r#"
+            scene.pov:1:1: warning: assumed_gamma is not set in this POV-Ray 3.7 scene; taking assumed_gamma 1.0
+                1 | #version 3.7;
+                  | ^~~~~~~~
+            note: add `assumed_gamma 1.0` to global_settings
+        "#]],
+    );
+    check_diagnostics(
+        "sphere { 0, 1 }\n#version 3.6;\n",
+        expect![[r#"
+            scene.pov:2:1: warning: assumed_gamma is not set, so colours are not gamma corrected, as in scenes older than POV-Ray 3.7
+                2 | #version 3.6;
+                  | ^~~~~~~~
+            note: add `assumed_gamma 1.0` to global_settings
+        "#]],
+    );
+    check_diagnostics(
+        "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n",
+        expect![""],
     );
 }
 

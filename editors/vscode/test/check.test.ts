@@ -19,7 +19,7 @@ test('check over a folder gives findings with files, places and codes', () => {
   const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'povrayst-check-'));
   try {
     fs.mkdirSync(path.join(dir, 'scenes'));
-    fs.writeFileSync(path.join(dir, 'scenes', 'ok.pov'), '#version 3.7;\n#declare Unused = 1;\nsphere { 0, 1 }\n');
+    fs.writeFileSync(path.join(dir, 'scenes', 'ok.pov'), '#version 3.7; global_settings { assumed_gamma 1 }\n#declare Unused = 1;\nsphere { 0, 1 }\n');
     fs.writeFileSync(path.join(dir, 'broken.pov'), '#version 3.7;\nsphere { 0, Raduis }\n');
     const { command, args } = checkCommand(settings, [dir]);
     let stdout = '';
