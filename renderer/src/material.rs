@@ -114,26 +114,31 @@ impl Surface {
             Surface::Pattern { pattern, map }
                 if matches!(pattern.kind, scene::PatternKind::Average) =>
             {
-                let at = at.for_pattern(pattern).for_entries(pattern);
+                let moved = at.for_pattern(pattern);
+                let entries_at = moved.for_entries(pattern);
+                let at: &TexturePoint = &entries_at;
                 for (share, surface) in pattern::average_shares(map) {
-                    surface.for_each_layers(&at, weight * share, f);
+                    surface.for_each_layers(at, weight * share, f);
                 }
             }
             Surface::Pattern { pattern, map } => {
-                let at = at.for_pattern(pattern);
-                let (a, b, t) = locate(map, value_at(pattern, &at));
+                let moved = at.for_pattern(pattern);
+                let at: &TexturePoint = &moved;
+                let (a, b, t) = locate(map, value_at(pattern, at));
+                let entries_at;
                 let at = if map[a].1.needs_point() || map[b].1.needs_point() {
-                    at.for_entries(pattern)
+                    entries_at = at.for_entries(pattern);
+                    &*entries_at
                 } else {
                     at
                 };
                 if a == b || t == 0.0 {
-                    map[a].1.for_each_layers(&at, weight, f);
+                    map[a].1.for_each_layers(at, weight, f);
                 } else if t == 1.0 {
-                    map[b].1.for_each_layers(&at, weight, f);
+                    map[b].1.for_each_layers(at, weight, f);
                 } else {
-                    map[a].1.for_each_layers(&at, weight * (1.0 - t), f);
-                    map[b].1.for_each_layers(&at, weight * t, f);
+                    map[a].1.for_each_layers(at, weight * (1.0 - t), f);
+                    map[b].1.for_each_layers(at, weight * t, f);
                 }
             }
             Surface::Blend { weights, surfaces } => {
@@ -235,25 +240,34 @@ impl Pigment {
             Pigment::Pattern { pattern, map }
                 if matches!(pattern.kind, scene::PatternKind::Average) =>
             {
-                let at = at.for_pattern(pattern).for_entries(pattern);
+                let moved = at.for_pattern(pattern);
+                let entries_at = moved.for_entries(pattern);
+                let at: &TexturePoint = &entries_at;
                 pattern::weighted_colour(
                     pattern::average_shares(map)
-                        .map(|(share, pigment)| (share, pigment.colour_at(&at))),
+                        .map(|(share, pigment)| (share, pigment.colour_at(at))),
                 )
             }
             Pigment::Pattern { pattern, map } => {
-                let at = at.for_pattern(pattern);
-                let (a, b, t) = locate(map, value_at(pattern, &at));
-                let solid = |i: usize| matches!(map[i].1, Pigment::Solid(_));
-                let at = if solid(a) && solid(b) {
-                    at
-                } else {
-                    at.for_entries(pattern)
-                };
+                let moved = at.for_pattern(pattern);
+                let at: &TexturePoint = &moved;
+                let (a, b, t) = locate(map, value_at(pattern, at));
+                let (lower, upper) = (&map[a].1, &map[b].1);
+                // A colour map's entries (plain colours) are read here, without a call or
+                // the point where entries are evaluated.
+                if let (Pigment::Solid(lower), Pigment::Solid(upper)) = (lower, upper) {
+                    return if a == b || t == 0.0 {
+                        *lower
+                    } else {
+                        lower.lerp(*upper, t)
+                    };
+                }
+                let entries_at = at.for_entries(pattern);
+                let at: &TexturePoint = &entries_at;
                 if a == b || t == 0.0 {
-                    map[a].1.colour_at(&at)
+                    lower.colour_at(at)
                 } else {
-                    map[a].1.colour_at(&at).lerp(map[b].1.colour_at(&at), t)
+                    lower.colour_at(at).lerp(upper.colour_at(at), t)
                 }
             }
             Pigment::Image { map, to_pattern } => {

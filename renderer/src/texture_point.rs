@@ -5,6 +5,7 @@
 use analysis::pattern::Facing;
 use analysis::scene::Pattern;
 use glam::{DVec2, DVec3};
+use std::borrow::Cow;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TexturePoint {
@@ -29,24 +30,27 @@ impl TexturePoint {
     }
 
     /// Where `pattern` and the patterns of its map are evaluated: a uv-mapped pattern moves
-    /// the point to (u, v, 0) for itself and everything under it.
-    pub fn for_pattern(&self, pattern: &Pattern) -> TexturePoint {
+    /// the point to (u, v, 0) for itself and everything under it. Most patterns leave the
+    /// point where it is, and borrow it: a copy is fifteen words, for every pattern of
+    /// every map at every hit.
+    pub fn for_pattern(&self, pattern: &Pattern) -> Cow<'_, TexturePoint> {
         if pattern.uv_mapping {
-            TexturePoint {
+            Cow::Owned(TexturePoint {
                 world: self.uv.extend(0.0),
                 ..*self
-            }
+            })
         } else {
-            *self
+            Cow::Borrowed(self)
         }
     }
 
     /// Where the entries of `pattern`'s map are evaluated: the point the pattern's warps
-    /// and turbulence moved it to (see [`analysis::pattern::entry_point`]).
-    pub fn for_entries(&self, pattern: &Pattern) -> TexturePoint {
+    /// and turbulence moved it to (see [`analysis::pattern::entry_point`]); borrowed when
+    /// they did not move it.
+    pub fn for_entries(&self, pattern: &Pattern) -> Cow<'_, TexturePoint> {
         match analysis::pattern::entry_point(pattern, self.world) {
-            Some(world) => TexturePoint { world, ..*self },
-            None => *self,
+            Some(world) => Cow::Owned(TexturePoint { world, ..*self }),
+            None => Cow::Borrowed(self),
         }
     }
 
