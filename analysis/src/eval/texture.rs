@@ -433,10 +433,7 @@ impl Evaluator<'_> {
             },
             CYLINDRICAL_KW => PatternKind::Cylindrical,
             DENTS_KW => PatternKind::Dents,
-            GRADIENT_KW => {
-                let v = self.vector()?;
-                PatternKind::Gradient(v)
-            }
+            GRADIENT_KW => PatternKind::gradient(self.vector()?),
             GRANITE_KW => PatternKind::Granite,
             HEXAGON_KW => PatternKind::Hexagon,
             LEOPARD_KW => PatternKind::Leopard,

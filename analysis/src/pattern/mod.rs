@@ -367,10 +367,8 @@ pub fn evaluate_warped(pattern: &Pattern, p: DVec3, facing: Option<&Facing>) -> 
 /// Raw values of the blend patterns that take no special turbulence.
 fn blend_value(kind: &PatternKind, p: DVec3) -> f64 {
     match kind {
-        PatternKind::Gradient(v) => {
-            let len = v.length();
-            if len > 0.0 { p.dot(*v / len) } else { 0.0 }
-        }
+        // A gradient along a zero vector is 0 everywhere, as the last arm gives.
+        PatternKind::Gradient(unit) if *unit != DVec3::ZERO => p.dot(*unit),
         PatternKind::Spherical => 1.0 - p.length().min(1.0),
         PatternKind::Cylindrical => 1.0 - (p.x * p.x + p.z * p.z).sqrt().min(1.0),
         PatternKind::Planar => 1.0 - p.y.abs().min(1.0),

@@ -102,6 +102,8 @@ pub enum PatternKind {
         metric: f64,
     },
     Function(Arc<Function>),
+    /// The direction of the ramp as a unit vector (zero for a zero vector), found once
+    /// rather than at every evaluation.
     Gradient(DVec3),
     Granite,
     Hexagon,
@@ -151,6 +153,14 @@ pub enum PatternKind {
     Aoi,
     /// `pavement`: the x-z plane paved with one polyform tile.
     Pavement(Pavement),
+}
+
+impl PatternKind {
+    /// `gradient` along `v`, kept as the unit vector its values are measured along.
+    pub fn gradient(v: DVec3) -> PatternKind {
+        let len = v.length();
+        PatternKind::Gradient(if len > 0.0 { v / len } else { DVec3::ZERO })
+    }
 }
 
 /// The tile of a `pavement`: `number_of_sides` of its cells (3, 4 or 6),
