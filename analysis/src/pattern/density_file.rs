@@ -76,7 +76,10 @@ impl DensityGrid {
             self.size[1] as f64,
             self.size[2] as f64,
         );
-        let cell = scaled.floor();
+        // Inside the unit cube the scaled point is at least 0 (or -0), where the floor is
+        // the conversion to an integer: `f64::floor` is a library call on targets without
+        // a rounding instruction (x86-64's baseline), three for every value.
+        let cell = scaled.as_uvec3().as_dvec3();
         // Rounding can put a point just below 1 on the grid's far side: it stays in the
         // last voxel.
         let index = |axis: usize| (cell[axis] as usize).min(self.size[axis] - 1);
@@ -85,7 +88,10 @@ impl DensityGrid {
             return self.voxel(i, j, k);
         }
         let t = scaled - cell;
-        let next = |n: usize, axis: usize| (n + 1) % self.size[axis];
+        // The next voxel, round to the first past the last (without a division).
+        let next = |n: usize, axis: usize| {
+            if n + 1 == self.size[axis] { 0 } else { n + 1 }
+        };
         let (i1, j1, k1) = (next(i, 0), next(j, 1), next(k, 2));
         let lerp = |a: f64, b: f64, t: f64| a + (b - a) * t;
         let plane = |k: usize| {
