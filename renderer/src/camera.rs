@@ -18,6 +18,9 @@ pub struct Camera {
     kind: CameraKind,
     location: DVec3,
     direction: DVec3,
+    /// `direction` normalized: an orthographic camera's every ray, found once rather
+    /// than for each (a square root and a division).
+    unit_direction: DVec3,
     right: DVec3,
     up: DVec3,
     /// The viewing angle in degrees for the angular projections.
@@ -42,6 +45,7 @@ impl Camera {
             kind: camera.kind.clone(),
             location: camera.location,
             direction: camera.direction,
+            unit_direction: camera.direction.normalize_or_zero(),
             right: camera.right,
             up: camera.up,
             angle: camera.angle.unwrap_or(90.0),
@@ -85,11 +89,11 @@ impl Camera {
                 eye: self.location,
                 frame,
             }),
-            // Every ray carries the one direction `ray` normalizes, bit for bit.
+            // Every ray carries this one direction (see `ray`).
             CameraKind::Orthographic => Some(View::Orthographic {
                 location: self.location,
                 frame,
-                ray_direction: self.direction.normalize_or_zero(),
+                ray_direction: self.unit_direction,
             }),
             _ => None,
         }
@@ -108,7 +112,7 @@ impl Camera {
             ),
             CameraKind::Orthographic => (
                 self.location + x0 * self.right + y0 * self.up,
-                self.direction,
+                self.unit_direction,
             ),
             CameraKind::Fisheye => {
                 let (u, v) = (2.0 * x0 * self.right_len, 2.0 * y0 * self.up_len);
@@ -214,7 +218,10 @@ impl Camera {
                 (self.location, DMat3::from_axis_angle(self.up, lon) * v1)
             }
         };
-        let mut direction = direction.normalize_or_zero();
+        let mut direction = match self.kind {
+            CameraKind::Orthographic => direction,
+            _ => direction.normalize_or_zero(),
+        };
         if let Some(normal) = &self.normal {
             // POV-Ray samples the camera's normal pattern on the image itself, at the
             // position (x0, y0, 0), and pushes the ray's world direction by it.

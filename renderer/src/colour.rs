@@ -140,6 +140,9 @@ impl EncodeTable {
         self.table[i] + (self.table[i + 1] - self.table[i]) * t
     }
 
+    /// Inlined natively, as `encode` is: every output pixel and every antialiasing
+    /// comparison calls it.
+    #[cfg_attr(not(target_arch = "wasm32"), inline)]
     pub fn encode_vec(&self, v: DVec3) -> DVec3 {
         DVec3::new(self.encode(v.x), self.encode(v.y), self.encode(v.z))
     }
