@@ -107,12 +107,10 @@ const MINUS_Z: u8 = 8;
 pub(super) fn square_distance(layout: &Layout, pavement: &Pavement, q: DVec2) -> f64 {
     let (x, z) = (floor(q.x), floor(q.y));
     let (u, w) = (q.x - x, q.y - z);
-    let (i, k) = (x as i32, z as i32);
+    let lower_left = layout.in_period((x as i32, z as i32));
     // The masks of the cell's corners, by (cx, cz) offset from its lower left one.
-    let masks = [
-        [layout.mask((i, k)), layout.mask((i, k + 1))],
-        [layout.mask((i + 1, k)), layout.mask((i + 1, k + 1))],
-    ];
+    let mask = |offset: (i32, i32)| layout.mask_near(lower_left, offset);
+    let masks = [[mask((0, 0)), mask((0, 1))], [mask((1, 0)), mask((1, 1))]];
     // The cell's own tile edges: along x at z = 0 and 1, along z at x = 0 and 1.
     let along_x = [masks[0][0] & PLUS_X != 0, masks[0][1] & PLUS_X != 0];
     let along_z = [masks[0][0] & PLUS_Z != 0, masks[1][0] & PLUS_Z != 0];
@@ -196,9 +194,10 @@ pub(super) fn hexagon_distance(layout: &Layout, pavement: &Pavement, q: DVec2, r
     let form = Look::new(pavement.form);
     let interior = Look::new(pavement.interior);
     let mut nearest = ramp;
-    for (j, (di, dk)) in steps.iter().enumerate() {
+    let centre_in_period = layout.in_period(centre);
+    for (j, &(di, dk)) in steps.iter().enumerate() {
         let corner = (centre.0 + di, centre.1 + dk);
-        let mask = layout.mask(corner);
+        let mask = layout.mask_near(centre_in_period, (di, dk));
         // The cell's edges from this corner to the next and to the previous one, and
         // the lattice edge leaving it away from the cell.
         let (next, previous, outward) = ((j + 2) % 6, (j + 4) % 6, j);
@@ -245,8 +244,10 @@ pub(super) fn triangle_distance(layout: &Layout, pavement: &Pavement, q: DVec2, 
         .min_by(|&a, &b| q.distance(places[a]).total_cmp(&q.distance(places[b])))
         .unwrap_or(0);
     let mut nearest = ramp;
+    let first_in_period = layout.in_period(corners[0]);
     for (n, (&corner, &place)) in corners.iter().zip(&places).enumerate() {
-        let mask = layout.mask(corner);
+        let offset = (corner.0 - corners[0].0, corner.1 - corners[0].1);
+        let mask = layout.mask_near(first_in_period, offset);
         let from_corner = q - place;
         let across = lattice.across(from_corner).map(f64::abs);
         // The cell's own edge from this corner to the next.

@@ -353,11 +353,33 @@ impl Layout {
         }
     }
 
-    /// The directions in which tile edges leave the lattice vertex `(i, k)`, as bits of
-    /// `Lattice::steps`.
-    fn mask(&self, (i, k): (i32, i32)) -> u8 {
+    /// The lattice vertex `(i, k)` taken into the period, `(i mod p, k mod q)`, for
+    /// [`Layout::mask_near`]: so that the masks round a cell cost one pair of integer
+    /// divisions (some twenty cycles each) rather than a pair apiece.
+    fn in_period(&self, (i, k): (i32, i32)) -> (i32, i32) {
         let (p, q) = self.period;
-        self.masks[(k.rem_euclid(q) * p + i.rem_euclid(p)) as usize]
+        (i.rem_euclid(p), k.rem_euclid(q))
+    }
+
+    /// The directions in which tile edges leave the lattice vertex `(di, dk)` (each -1,
+    /// 0 or 1) from `base`, as bits of `Lattice::steps`; `base` is a vertex already in the
+    /// period (see [`Layout::in_period`]), which a step leaves by at most one period, and
+    /// one addition or subtraction takes back.
+    // Out of line in WebAssembly, where the inlined copies at a dozen calls made the
+    // plugin larger (what is interpreted gains nothing from inlining here).
+    #[cfg_attr(target_arch = "wasm32", inline(never))]
+    fn mask_near(&self, base: (i32, i32), (di, dk): (i32, i32)) -> u8 {
+        let (p, q) = self.period;
+        let wrap = |v: i32, n: i32| {
+            if v < 0 {
+                v + n
+            } else if v >= n {
+                v - n
+            } else {
+                v
+            }
+        };
+        self.masks[(wrap(base.1 + dk, q) * p + wrap(base.0 + di, p)) as usize]
     }
 
     /// The distance from `q` to the tile's edges as the ramp counts it, where it is
