@@ -149,9 +149,10 @@ fn statistics(p: &Picture) -> (f64, f64, f64) {
     (mean, sd, gradient)
 }
 
-/// Noise patterns match POV-Ray statistically (they are not bit-identical): over a plane
-/// showing a few hundred features of bozo mapped to grey, the mean differs by less than
-/// 0.02 and the standard deviation and the mean neighbour difference by less than 10 %.
+/// Noise patterns match POV-Ray statistically (as they do pixel for pixel, see
+/// scenes.txt): over a plane showing a few hundred features of bozo mapped to grey, the
+/// mean differs by less than 0.02 and the standard deviation and the mean neighbour
+/// difference by less than 10 %.
 #[test]
 fn noise_statistics_match_povray() {
     let (scene, reference) = scene_and_reference("noise-bozo");
@@ -274,12 +275,11 @@ fn light_difference(a: &Picture, b: &Picture) -> (f64, f64) {
     (cells, percentiles)
 }
 
-/// caustic.pov's rippled water bends the checkers elsewhere than POV-Ray's (other wave
-/// sources), so its picture matches POV-Ray's only in its light (the scenes.txt thresholds
-/// bound that loosely, blurred). Here the brightness of the floor that the caustic lights
-/// is compared: the 4 × 3 cells' mean grey within 10/255 and the 50th, 90th and 99th
-/// percentiles of the grey values within 8/255. The same scene without photons, whose
-/// floor misses the caustic's light, fails that.
+/// caustic.pov's photons are stochastic (their jitter is not POV-Ray's), so its picture
+/// matches POV-Ray's blurred (the scenes.txt thresholds). Here the brightness of the floor that the caustic lights
+/// is compared: the 4 × 3 cells' mean grey within 4/255 and the 50th, 90th and 99th
+/// percentiles of the grey values within 3/255 (1.8 and 1.0 now). The same scene without
+/// photons, whose floor misses the caustic's light, fails that (18.1 and 59.3).
 #[test]
 fn photon_caustic_lights_the_floor_as_povray_does() {
     let scenes = manifest();
@@ -289,7 +289,7 @@ fn photon_caustic_lights_the_floor_as_povray_does() {
     let ours = caustic.render_with(&source).unwrap();
     let (cells, percentiles) = light_difference(&reference, &ours);
     eprintln!("caustic: cells {cells:.1}, percentiles {percentiles:.1}");
-    assert!(cells <= 10.0 && percentiles <= 8.0, "{cells} {percentiles}");
+    assert!(cells <= 4.0 && percentiles <= 3.0, "{cells} {percentiles}");
     let block = "photons { spacing 0.10 gather 3, 8 }";
     assert!(
         source.contains(block),
@@ -298,7 +298,7 @@ fn photon_caustic_lights_the_floor_as_povray_does() {
     let dark = caustic.render_with(&source.replace(block, "")).unwrap();
     let (cells, percentiles) = light_difference(&reference, &dark);
     eprintln!("caustic without photons: cells {cells:.1}, percentiles {percentiles:.1}");
-    assert!(cells > 10.0 || percentiles > 8.0, "{cells} {percentiles}");
+    assert!(cells > 4.0 || percentiles > 3.0, "{cells} {percentiles}");
 }
 
 /// Renders the manifest's scene `name` with each `(what, from, to)` change to its source and

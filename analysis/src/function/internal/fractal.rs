@@ -1,10 +1,8 @@
 //! Noise and the fractal sums built from it (Musgrave's heterogeneous and ridged
 //! multifractals and POV-Ray's ridge function). The way each sums its octaves was pinned
 //! down against POV-Ray 3.7 by feeding its own `f_noise_generator` values through each
-//! candidate; the noise itself is the project's (`crate::noise`), which matches POV-Ray's
-//! statistically, not bit for bit, so neither do these values. The generator-type
-//! parameter is accepted and, like the patterns' `noise_generator`, does not change the
-//! noise. `a` is `x, y, z, P0, ...`.
+//! candidate; the noise itself is POV-Ray's (`crate::noise`), so the values are too. `a`
+//! is `x, y, z, P0, ...`.
 
 use glam::DVec3;
 
@@ -16,19 +14,35 @@ fn point(a: &[f64]) -> DVec3 {
     DVec3::new(a[0], a[1], a[2])
 }
 
+/// The noise generator a function's parameter selects: POV-Ray 3.7 takes the truncated
+/// number's two low bits, 2 and 3 naming generators 2 and 3 and 0 and 1 the original one
+/// (measured: -1 and 7 give generator 3, -2 and 258 generator 2, 0, 4 and 5 generator 1).
+fn generator(parameter: f64) -> u8 {
+    match (parameter as i64) & 3 {
+        2 => 2,
+        3 => 3,
+        _ => 1,
+    }
+}
+
 /// Solid noise in 0..1.
-fn noise(p: DVec3) -> f64 {
-    crate::noise::noise(p)
+fn noise(p: DVec3, generator: u8) -> f64 {
+    crate::noise::noise_with_generator(p, generator)
 }
 
 /// Solid noise stretched to -1..1.
-fn signed(p: DVec3) -> f64 {
-    2.0 * noise(p) - 1.0
+fn signed(p: DVec3, generator: u8) -> f64 {
+    2.0 * noise(p, generator) - 1.0
 }
 
-/// Solid noise, 0..1.
+/// Solid noise, 0..1, by the default generator.
 pub fn noise3d(a: &[f64]) -> f64 {
-    noise(point(a))
+    crate::noise::noise(point(a))
+}
+
+/// Solid noise, 0..1, by the generator of parameter `P0`.
+pub fn noise_generator(a: &[f64]) -> f64 {
+    noise(point(a), generator(a[3]))
 }
 
 /// The heterogeneous multifractal: offset + noise, then each octave i (frequency
@@ -37,6 +51,7 @@ pub fn noise3d(a: &[f64]) -> f64 {
 /// times the value. Parameters H, lacunarity, octaves, offset, T, generator.
 pub fn hetero_mf(a: &[f64]) -> f64 {
     let (h, lacunarity, octaves, offset, t) = (a[3], a[4], a[5], a[6], a[7]);
+    let signed = |p| signed(p, generator(a[8]));
     let octaves = octaves.min(MAX_OCTAVES);
     let heterogeneity = if t >= 1.0 {
         t.min(MAX_OCTAVES) as u32
@@ -70,6 +85,7 @@ pub fn hetero_mf(a: &[f64]) -> f64 {
 /// skips its division. Parameters lambda, octaves, omega, offset, ridge, generator.
 pub fn ridge(a: &[f64]) -> f64 {
     let (lambda, octaves, omega, offset, crest) = (a[3], a[4], a[5], a[6], a[7]);
+    let noise = |p| noise(p, generator(a[8]));
     let octaves = octaves.min(MAX_OCTAVES);
     let term = |p: DVec3| {
         let distance = (crest - noise(p)).abs();
@@ -106,6 +122,7 @@ pub fn ridge(a: &[f64]) -> f64 {
 /// offset, gain, generator.
 pub fn ridged_mf(a: &[f64]) -> f64 {
     let (h, lacunarity, octaves, offset, gain) = (a[3], a[4], a[5], a[6], a[7]);
+    let signed = |p| signed(p, generator(a[8]));
     let octaves = octaves.min(MAX_OCTAVES);
     let mut p = point(a);
     let mut signal = (offset - signed(p).abs()).powi(2);
@@ -130,7 +147,7 @@ mod tests {
         // POV-Ray 3.7 with one octave: f_hetero_mf = offset + snoise, f_ridged_mf =
         // (offset − |snoise|)², f_ridge(…, offset 1, ridge 1) = −noise.
         let p = [0.3, -1.7, 2.2];
-        let n = noise(DVec3::from_array(p));
+        let n = noise(DVec3::from_array(p), 2);
         let s = 2.0 * n - 1.0;
         let hetero = hetero_mf(&[p[0], p[1], p[2], 0.5, 2.0, 1.0, 1.0, 0.5, 2.0]);
         assert!((hetero - (1.0 + s)).abs() < 1e-12);

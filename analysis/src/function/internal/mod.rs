@@ -111,7 +111,7 @@ internals! {
     74 f_witch_of_agnesi 2 algebraic::witch_of_agnesi;
     75 f_witch_of_agnesi_2d 6 plane_curves::witch_of_agnesi_2d;
     76 f_noise3d 0 fractal::noise3d;
-    78 f_noise_generator 1 fractal::noise3d;
+    78 f_noise_generator 1 fractal::noise_generator;
 }
 
 impl Internal {
