@@ -166,6 +166,23 @@ impl Leaf {
         Some(local.corners().map(|c| to_world.transform_point3(c)))
     }
 
+    /// The corners in the world of boxes that together hold the surface more tightly than
+    /// its one box: the arcs of a ring (see [`crate::shapes::Torus::arc_boxes`]). `None`
+    /// for other shapes.
+    pub fn piece_corners(&self) -> Option<Vec<[DVec3; 8]>> {
+        let Shape::Torus(torus) = &self.shape else {
+            return None;
+        };
+        let to_world = self.to_local.map_or(DAffine3::IDENTITY, |m| m.inverse());
+        if !to_world.is_finite() {
+            return None;
+        }
+        let pieces = torus
+            .arc_boxes()
+            .map(|b| b.corners().map(|c| to_world.transform_point3(c)));
+        Some(pieces.to_vec())
+    }
+
     /// Gives a mesh's triangles the materials of its texture list.
     pub fn set_face_materials(&mut self, materials: Vec<Arc<Material>>) {
         self.transmits |= materials.iter().any(|m| m.transmits);

@@ -119,7 +119,21 @@ impl Vista {
             };
             for y in y0..y1 {
                 let (x0, x1) = seen.row(y, (x0, x1));
-                listed.extend((x0..x1).map(|x| ((y * CELLS + x) as u32, entry)));
+                if seen.pieces.is_empty() {
+                    listed.extend((x0..x1).map(|x| ((y * CELLS + x) as u32, entry)));
+                    continue;
+                }
+                let mut covered = [false; CELLS];
+                for piece in &seen.pieces {
+                    if let Some((a, b)) = band(piece, y) {
+                        covered[a.max(x0)..b.min(x1).max(a.max(x0))].fill(true);
+                    }
+                }
+                listed.extend(
+                    (x0..x1)
+                        .filter(|&x| covered[x])
+                        .map(|x| ((y * CELLS + x) as u32, entry)),
+                );
             }
             if listed.len() > MAX_ENTRIES {
                 return None;
@@ -206,10 +220,13 @@ fn stays_in_its_cells(v: DVec3, reach: f64) -> bool {
 }
 
 /// Where an object may show in the image: a box of image positions (x, y) and depths (z),
-/// and the convex outlines of its boxes' images, counter-clockwise.
+/// the convex outlines of its boxes' images, counter-clockwise, in all of which it lies,
+/// and those of its pieces' boxes, in one of which each of its points lies (none when it
+/// is not divided into pieces).
 struct Seen {
     rect: Aabb,
     outlines: Vec<Vec<DVec2>>,
+    pieces: Vec<Vec<DVec2>>,
 }
 
 impl Seen {
@@ -220,46 +237,54 @@ impl Seen {
 
     /// The cells `[first, end)` of row `y`, among `cells`, that the outlines may reach.
     fn row(&self, y: usize, cells: (usize, usize)) -> (usize, usize) {
-        let n = CELLS as f64;
-        let (lo, hi) = (y as f64 / n - 0.5, (y + 1) as f64 / n - 0.5);
-        let pad = SLACK * (1.0 + lo.abs().max(hi.abs()));
-        let (lo, hi) = (lo - pad, hi + pad);
         let (mut first, mut end) = cells;
         for outline in &self.outlines {
-            // The outline's part in the row's band is convex, and its corners lie on the
-            // outline's sides: its reach across is that of the sides' parts in the band.
-            let (mut left, mut right) = (f64::INFINITY, f64::NEG_INFINITY);
-            for (i, &a) in outline.iter().enumerate() {
-                let b = outline[(i + 1) % outline.len()];
-                let (mut t0, mut t1) = (0.0, 1.0);
-                if a.y == b.y {
-                    if a.y < lo || a.y > hi {
-                        continue;
-                    }
-                } else {
-                    let (ta, tb) = ((lo - a.y) / (b.y - a.y), (hi - a.y) / (b.y - a.y));
-                    t0 = fast_math::max(t0, fast_math::min(ta, tb));
-                    t1 = fast_math::min(t1, fast_math::max(ta, tb));
-                    if t0 > t1 {
-                        continue;
-                    }
-                }
-                for t in [t0, t1] {
-                    let x = a.x + (b.x - a.x) * t;
-                    left = fast_math::min(left, x);
-                    right = fast_math::max(right, x);
-                }
-            }
-            if left > right {
+            let Some((x0, x1)) = band(outline, y) else {
                 return (0, 0);
-            }
-            let pad = SLACK * (1.0 + left.abs().max(right.abs()));
-            let (x0, x1) = cell_range(left - pad, right + pad);
+            };
             first = first.max(x0);
             end = end.min(x1);
         }
         (first, end.max(first))
     }
+}
+
+/// The cells `[first, end)` of row `y` that a convex outline may reach; `None` when it
+/// stays out of the row.
+fn band(outline: &[DVec2], y: usize) -> Option<(usize, usize)> {
+    let n = CELLS as f64;
+    let (lo, hi) = (y as f64 / n - 0.5, (y + 1) as f64 / n - 0.5);
+    let pad = SLACK * (1.0 + lo.abs().max(hi.abs()));
+    let (lo, hi) = (lo - pad, hi + pad);
+    // The outline's part in the row's band is convex, and its corners lie on the
+    // outline's sides: its reach across is that of the sides' parts in the band.
+    let (mut left, mut right) = (f64::INFINITY, f64::NEG_INFINITY);
+    for (i, &a) in outline.iter().enumerate() {
+        let b = outline[(i + 1) % outline.len()];
+        let (mut t0, mut t1) = (0.0, 1.0);
+        if a.y == b.y {
+            if a.y < lo || a.y > hi {
+                continue;
+            }
+        } else {
+            let (ta, tb) = ((lo - a.y) / (b.y - a.y), (hi - a.y) / (b.y - a.y));
+            t0 = fast_math::max(t0, fast_math::min(ta, tb));
+            t1 = fast_math::min(t1, fast_math::max(ta, tb));
+            if t0 > t1 {
+                continue;
+            }
+        }
+        for t in [t0, t1] {
+            let x = a.x + (b.x - a.x) * t;
+            left = fast_math::min(left, x);
+            right = fast_math::max(right, x);
+        }
+    }
+    if left > right {
+        return None;
+    }
+    let pad = SLACK * (1.0 + left.abs().max(right.abs()));
+    Some(cell_range(left - pad, right + pad))
 }
 
 /// Where `object` may show through the camera at `origin` (the eye, or the orthographic
@@ -281,18 +306,44 @@ fn seen_from(
     let mut seen = Seen {
         rect: Aabb::INFINITE,
         outlines: Vec::new(),
+        pieces: Vec::new(),
+    };
+    let image = |corners: &[DVec3; 8]| match parallel {
+        None => project(corners, origin, to_frame),
+        Some(_) => Some(project_parallel(corners, origin, to_frame)),
     };
     for corners in [Some(object.bounds().corners()), tilted]
         .into_iter()
         .flatten()
     {
-        let (rect, points) = match parallel {
-            None => project(&corners, origin, to_frame)?,
-            Some(_) => project_parallel(&corners, origin, to_frame),
-        };
+        let (rect, points) = image(&corners)?;
         seen.rect = seen.rect.intersection(&rect);
         if let Some(points) = points {
             seen.outlines.push(convex_hull(&points));
+        }
+    }
+    // A ring's arcs, seen one by one, leave out the cells of its hole and of the space
+    // around it that its boxes cover. A piece wholly behind the eye shows nowhere; one
+    // reaching behind it, everywhere, and then the pieces are not worth their outlines.
+    if let Object::Leaf(leaf) = object
+        && let Some(pieces) = leaf.piece_corners()
+    {
+        let mut reach = Aabb::EMPTY;
+        let mut outlines = Vec::with_capacity(pieces.len());
+        for corners in &pieces {
+            let Some((rect, points)) = image(corners) else {
+                continue;
+            };
+            let Some(points) = points else {
+                outlines.clear();
+                break;
+            };
+            reach = reach.union(&rect);
+            outlines.push(convex_hull(&points));
+        }
+        if !outlines.is_empty() {
+            seen.rect = seen.rect.intersection(&reach);
+            seen.pieces = outlines;
         }
     }
     (!seen.rect.is_empty()).then_some(seen)
@@ -439,6 +490,25 @@ mod tests {
             }
         }
         assert!(hits > 1000, "the scene is in view");
+    }
+
+    /// A ray through a ring's hole, seen at a slant, has nothing to test: the ring's
+    /// arcs cover the cells around the hole, not the hole itself.
+    #[test]
+    fn a_ring_is_listed_around_its_hole_only() {
+        let (scene, mut world) = scene_and_world_of_source(
+            "camera { location <0, 0, -6> look_at <0, 0, 0> }
+             torus { 1.5, 0.1 rotate <60, 0, 10> }",
+        );
+        let camera = Camera::from_scene(&scene.camera).unwrap();
+        world.bvh.view_from(camera.view());
+        let vista = world.bvh.vista.as_ref().unwrap();
+        let cell = |x: f64, y: f64| vista.cell(&camera.ray(x, y, 1.0, 1.0).unwrap()).unwrap();
+        assert!(cell(0.5, 0.5).entries.is_empty());
+        // The ring's point (1.5, 0, 0) before its rotation, and its image.
+        let (sin, cos) = 10f64.to_radians().sin_cos();
+        let (x, y) = (1.5 * cos / 6.0 / 1.33, 1.5 * sin / 6.0);
+        assert_eq!(cell(0.5 + x, 0.5 - y).entries.len(), 1);
     }
 
     #[test]

@@ -2,11 +2,15 @@
 //! in the x-z plane, centred on the origin.
 
 use super::{Root, Roots};
+use crate::bounds::Aabb;
 use crate::fast_math::{max, min};
 use crate::polynomial;
 use crate::ray::Ray;
 use crate::sturm;
 use glam::{DAffine3, DVec3};
+
+/// The arcs [`Torus::arc_boxes`] divides the ring into: a multiple of four.
+pub const ARCS: usize = 32;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Torus {
@@ -177,6 +181,24 @@ impl Torus {
                 found(t0 + x * span);
             }
         }
+    }
+
+    /// Boxes in the canonical frame that together hold the tube, one around each of
+    /// `ARCS` equal arcs of the ring thickened by the tube's radius: a ring seen at a slant
+    /// covers far less of the image than its one box, whose middle is the ring's hole.
+    /// The arcs end on the axes, so that each arc's extremes are its ends; the margin,
+    /// far beyond rounding, also holds crossings the quartic finds a hair off the tube.
+    pub fn arc_boxes(&self) -> [Aabb; ARCS] {
+        let (big, small) = (self.major, self.minor);
+        let pad = small + 1e-6 * (big + small);
+        let end = |k: usize| {
+            let (sin, cos) = (std::f64::consts::TAU * k as f64 / ARCS as f64).sin_cos();
+            DVec3::new(big * cos, 0.0, big * sin)
+        };
+        std::array::from_fn(|k| {
+            let (a, b) = (end(k), end(k + 1));
+            Aabb::new(a.min(b) - DVec3::splat(pad), a.max(b) + DVec3::splat(pad))
+        })
     }
 
     pub fn inside(&self, p: DVec3) -> bool {
