@@ -11,6 +11,7 @@ use crate::material::{Material, Surface};
 use crate::object::{Csg, CsgKind, Leaf, Object, Visibility};
 use crate::photons::{PhotonMap, SurfacePhotons, Target, add_targets};
 use crate::radiosity::Radiosity;
+use crate::ray::RayKind;
 use crate::shapes::bicubic_patch;
 use crate::shapes::mesh::{Hierarchy, MeshData};
 use crate::shapes::{
@@ -191,9 +192,20 @@ fn assemble(scene: &Scene, settings: BuildSettings) -> Result<(World, Vec<Target
         None => None,
     };
     let light_sets = builder.light_sets();
+    let participating = builder.has_media || atmosphere.is_some();
+    let blockable = bvh.seen_by(RayKind::Shadow) || participating;
+    let mut lights = builder.lights;
+    for light in &mut lights {
+        light.arrives_whole = light.arrives_whole_in(
+            quality.shadows,
+            quality.area_lights,
+            blockable,
+            atmosphere.is_some(),
+        );
+    }
     let world = World {
         bvh,
-        lights: builder.lights,
+        lights,
         light_sets,
         background,
         reflected_background: background_colour.rgb,
@@ -209,7 +221,7 @@ fn assemble(scene: &Scene, settings: BuildSettings) -> Result<(World, Vec<Target
         legacy_opacity: legacy,
         scale,
         shape_reports: builder.reports,
-        participating: builder.has_media || atmosphere.is_some(),
+        participating,
         sky,
         atmosphere,
         camera_interiors,

@@ -29,6 +29,9 @@ pub struct Light {
     pub projected_through: Option<Object>,
     /// Which photons the light shoots.
     pub photons: LightPhotons,
+    /// Whether its light reaches every point whole, before the surface's lighting: nothing
+    /// in the world can shadow, filter or dim it (see [`Light::arrives_whole_in`]).
+    pub arrives_whole: bool,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -156,7 +159,27 @@ impl Light {
             }),
             projected_through: None,
             photons: light.photons,
+            arrives_whole: false,
         })
+    }
+
+    /// Whether this light's colour reaches every point as it leaves the light, in a world
+    /// that traces shadow rays (`shadows`) and area lights' grids (`area_lights`) or not,
+    /// where `blockable` says whether anything may stand in a shadow ray's way (an object
+    /// shadow rays see, fog or media) and `atmosphere` whether there is one to dim light:
+    /// a light without an object to shine through, whose shadow rays are not traced or
+    /// can meet nothing.
+    pub fn arrives_whole_in(
+        &self,
+        shadows: bool,
+        area_lights: bool,
+        blockable: bool,
+        atmosphere: bool,
+    ) -> bool {
+        // An area light's samples would be averaged, which may round.
+        let sampled = self.area.is_some() && area_lights;
+        let unshadowed = self.shadowless || !shadows || !(blockable || sampled);
+        unshadowed && self.projected_through.is_none() && !(self.media_attenuation && atmosphere)
     }
 
     /// The direction of a parallel or cylinder light's rays; `None` for lights that shine
@@ -195,6 +218,17 @@ impl Light {
     /// The light reaching `point` from the light's centre, before shadows; `None` when none
     /// can (outside a spotlight's cone, at the light itself).
     pub fn incoming(&self, point: DVec3) -> Option<Incoming> {
+        // A plain point light, the common one, is not attenuated: its colour arrives as it
+        // is (times 1 it would be the same), without the calls.
+        if let (Kind::Point, None) = (self.kind, self.fade) {
+            let to = self.position - point;
+            let distance = to.length();
+            return (distance > 0.0 && distance.is_finite()).then(|| Incoming {
+                direction: to / distance,
+                distance,
+                colour: self.colour,
+            });
+        }
         let (direction, distance) = self.ray_to(point, self.position)?;
         let attenuation = self.attenuation(point, direction, distance);
         (attenuation > 0.0).then(|| Incoming {

@@ -502,7 +502,11 @@ impl<'w> Tracer<'w> {
         if facing(normal, incoming.direction, finish, double_illuminate).is_none() {
             return DVec3::ZERO;
         }
-        let light_colour = self.arriving(light, p, &incoming, interior);
+        let light_colour = if light.arrives_whole {
+            incoming.colour
+        } else {
+            self.arriving(light, p, &incoming, interior)
+        };
         // Negative lights darken, as in POV-Ray: only a light too weak either way is skipped.
         if light_colour.abs().max_element() < 1e-10 {
             return DVec3::ZERO;
