@@ -101,7 +101,24 @@ impl Camera {
 
     /// The ray through image position `(x, y)`, in pixels from the top-left corner of the
     /// image (pixel centres at half-integers). `None` where the projection has no ray.
+    #[inline]
     pub fn ray(&self, x: f64, y: f64, width: f64, height: f64) -> Option<Ray> {
+        // The common camera's rays are found inline, without a call (the same arithmetic
+        // as `projected_ray`'s).
+        if let (CameraKind::Perspective, None) = (&self.kind, &self.normal) {
+            let x0 = x / width - 0.5;
+            let y0 = 0.5 - y / height;
+            let direction = (self.direction + x0 * self.right + y0 * self.up).normalize_or_zero();
+            let origin = self.location;
+            return (direction != DVec3::ZERO && direction.is_finite() && origin.is_finite())
+                .then(|| Ray::new(origin, direction));
+        }
+        self.projected_ray(x, y, width, height)
+    }
+
+    /// [`Camera::ray`] through any camera.
+    #[inline(never)]
+    fn projected_ray(&self, x: f64, y: f64, width: f64, height: f64) -> Option<Ray> {
         // Image position as -0.5..0.5 across and 0.5..-0.5 down.
         let x0 = x / width - 0.5;
         let y0 = 0.5 - y / height;

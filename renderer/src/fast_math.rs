@@ -111,9 +111,27 @@ pub fn cbrt(x: f64) -> f64 {
 #[inline]
 pub fn pow(x: f64, e: f64) -> f64 {
     if e.trunc() == e && (0.0..=256.0).contains(&e) {
-        x.powi(e as i32)
+        powi(x, e as u32)
     } else {
         x.powf(e)
+    }
+}
+
+/// `x.powi(n)`, inlined: the library's repeated squaring, whose multiplications this
+/// makes in the same order, so that the result is the same to the bit; in WebAssembly
+/// `powi` is a call, made for every highlight.
+#[inline]
+fn powi(mut x: f64, mut n: u32) -> f64 {
+    let mut r = 1.0;
+    loop {
+        if n & 1 != 0 {
+            r *= x;
+        }
+        n >>= 1;
+        if n == 0 {
+            return r;
+        }
+        x *= x;
     }
 }
 
@@ -161,6 +179,30 @@ mod tests {
             }
         }
         assert!(pow(f64::NAN, 2.0).is_nan());
+    }
+
+    #[test]
+    fn powi_is_the_library_s_to_the_bit() {
+        for x in [
+            0.0f64,
+            -0.0,
+            1e-3,
+            0.31,
+            0.5,
+            0.999_999,
+            1.0,
+            1.7,
+            -2.3,
+            f64::NAN,
+        ] {
+            for n in 0..=256 {
+                let (want, got) = (x.powi(n as i32), powi(x, n));
+                assert!(
+                    want.to_bits() == got.to_bits() || (want.is_nan() && got.is_nan()),
+                    "{x}^{n}: {want} {got}"
+                );
+            }
+        }
     }
 
     #[test]

@@ -217,6 +217,7 @@ impl Light {
 
     /// The light reaching `point` from the light's centre, before shadows; `None` when none
     /// can (outside a spotlight's cone, at the light itself).
+    #[inline]
     pub fn incoming(&self, point: DVec3) -> Option<Incoming> {
         // A plain point light, the common one, is not attenuated: its colour arrives as it
         // is (times 1 it would be the same), without the calls.
@@ -229,6 +230,13 @@ impl Light {
                 colour: self.colour,
             });
         }
+        self.attenuated(point)
+    }
+
+    /// [`Light::incoming`] of a light that may be attenuated: kept out of line, so that
+    /// plain point lights pay no call.
+    #[inline(never)]
+    fn attenuated(&self, point: DVec3) -> Option<Incoming> {
         let (direction, distance) = self.ray_to(point, self.position)?;
         let attenuation = self.attenuation(point, direction, distance);
         (attenuation > 0.0).then(|| Incoming {

@@ -346,6 +346,7 @@ impl Leaf {
 
     /// The stretch of the ray inside the shape, inverse or not, for convex shapes (see
     /// [`Shape::convex_span`]).
+    #[inline]
     pub fn span(&self, ray: &Ray) -> Option<Span> {
         if !self.shape.has_convex_span() {
             return None;
@@ -755,6 +756,7 @@ impl Csg {
     /// For an intersection or a clip, the stretches of its uninverted leaves along the
     /// query's ray and where they meet; `None` when the ray meets no surface of the node
     /// within the query's interval. `Some(None)` for a merge, which has no such meeting.
+    #[inline]
     fn meet(&self, spans: &mut ChildSpans, q: &Query) -> Option<Option<Meeting>> {
         match self.kind {
             CsgKind::Intersection | CsgKind::Clip => {
@@ -794,6 +796,7 @@ impl Csg {
 
     /// Whether a crossing of child `from` at parameter `t` of the ray is on this CSG's
     /// surface.
+    #[inline]
     fn keeps(&self, spans: &ChildSpans, from: usize, t: f64, ray: &Ray) -> bool {
         // Whether the crossing must lie inside the other children or outside them all.
         let inside = match self.kind {

@@ -308,6 +308,7 @@ impl Subdivider {
 /// The ranges take plain comparisons, a handful of instructions each: a NaN skips them
 /// unless it comes first, and then the spread is NaN and the pairs are compared, in which
 /// a NaN never differs.
+#[inline]
 fn differ_at_corners(c: [&Compared; 4], threshold: f64) -> bool {
     let range = |channel: fn(&Sample) -> f64| {
         let first = channel(&c[0].encoded);

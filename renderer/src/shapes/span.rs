@@ -81,6 +81,7 @@ impl Shape {
     /// gives, for shapes whose inside meets every line in one stretch: a sphere, a box, a
     /// closed cylinder or cone, a plane's half-space. `None` for other shapes, whose
     /// inside must be tested point by point.
+    #[inline]
     pub fn convex_span(&self, ray: &Ray) -> Option<Span> {
         match self {
             Shape::Sphere(s) => Some(s.span(ray).map_or(Span::NOWHERE, |(t1, t2)| Span {
