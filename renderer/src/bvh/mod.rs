@@ -119,7 +119,7 @@ impl Bvh {
         let mut q = *q;
         let mut best = None;
         for object in &self.unbounded {
-            if let Some(hit) = object.nearest(&q, scratch) {
+            if let Some(hit) = nearest_of(object, &q, scratch) {
                 take(&mut best, hit, &mut q, false);
             }
         }
@@ -127,12 +127,7 @@ impl Bvh {
             if entry.depth >= cell.origin_depth + q.tmax * cell.depth_per_t {
                 break;
             }
-            // Leaves, most of the listed objects, are tested here without a call.
-            let hit = match &self.objects[entry.index as usize] {
-                Object::Leaf(leaf) => leaf.nearest(&q),
-                csg => csg.nearest(&q, scratch),
-            };
-            if let Some(hit) = hit {
+            if let Some(hit) = nearest_of(&self.objects[entry.index as usize], &q, scratch) {
                 take(&mut best, hit, &mut q, false);
             }
         }
@@ -159,7 +154,7 @@ impl Bvh {
         let mut q = *q;
         let mut best = None;
         for object in &self.unbounded {
-            if let Some(hit) = object.nearest(&q, scratch)
+            if let Some(hit) = nearest_of(object, &q, scratch)
                 && take(&mut best, hit, &mut q, opaque_ends)
             {
                 return best;
@@ -175,7 +170,7 @@ impl Bvh {
             |range, tmax| {
                 q.tmax = tmax;
                 for object in &self.objects[range] {
-                    if let Some(hit) = object.nearest(&q, scratch)
+                    if let Some(hit) = nearest_of(object, &q, scratch)
                         && take(&mut best, hit, &mut q, opaque_ends)
                     {
                         return f64::NEG_INFINITY;
@@ -185,6 +180,16 @@ impl Bvh {
             },
         );
         best
+    }
+}
+
+/// [`Object::nearest`], with a leaf, most objects, tested here without a call: the call's
+/// frame, sized for CSG nodes, costs the interpreted plugin more than a leaf's own test.
+#[inline(always)]
+fn nearest_of<'a>(object: &'a Object, q: &Query, scratch: &mut Vec<Hit<'a>>) -> Option<Hit<'a>> {
+    match object {
+        Object::Leaf(leaf) => leaf.nearest(q),
+        csg => csg.nearest(q, scratch),
     }
 }
 
