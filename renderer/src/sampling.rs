@@ -10,6 +10,7 @@
 use crate::camera::Camera;
 use crate::colour::{Curve, EncodeTable, Sample};
 use crate::fast_math;
+use crate::focal_blur::FocalBlur;
 use crate::mesh_camera::MeshRays;
 use crate::ray::Ray;
 use crate::tracer::{Tracer, World};
@@ -51,10 +52,17 @@ impl Sampler<'_> {
     /// The sample at image position `(x, y)` (pixel units from the top-left): one camera
     /// ray, or with focal blur the mean of rays through the lens from around it.
     pub fn trace(&self, tracer: &mut Tracer<'_>, x: f64, y: f64) -> Sample {
-        let Some(blur) = &self.camera.focal_blur else {
-            let ray = self.camera.ray(x, y, self.width, self.height);
-            return trace_camera_ray(tracer, ray);
-        };
+        if let Some(blur) = &self.camera.focal_blur {
+            return self.blurred(tracer, blur, x, y);
+        }
+        let ray = self.camera.ray(x, y, self.width, self.height);
+        trace_camera_ray(tracer, ray)
+    }
+
+    /// [`Sampler::trace`] through a camera with focal blur: kept out of line, so that the
+    /// interpreted plugin's calls of the common case set up no room for it.
+    #[inline(never)]
+    fn blurred(&self, tracer: &mut Tracer<'_>, blur: &FocalBlur, x: f64, y: f64) -> Sample {
         blur.pixel(position_seed(x, y), |s| {
             let (dx, dy) = s.pixel_offset;
             let pinhole = self.camera.ray(x + dx, y + dy, self.width, self.height);

@@ -104,6 +104,13 @@ impl Bvh {
         {
             return self.nearest_listed(q, scratch, &cell);
         }
+        self.searched(q, scratch)
+    }
+
+    /// [`Bvh::nearest`] by the hierarchy: kept out of line, so that the interpreted
+    /// plugin's calls for camera rays, which the vista serves, set up no room for it.
+    #[inline(never)]
+    fn searched<'a>(&'a self, q: &Query, scratch: &mut Vec<Hit<'a>>) -> Option<Hit<'a>> {
         self.search(q, scratch, false)
     }
 
