@@ -457,23 +457,22 @@ fn is_odd(x: f64) -> bool {
     x.abs() < EXACT_BELOW && x as i64 & 1 == 1
 }
 
-/// `v % MODULUS` for a finite `v`, bit for bit, without the library's remainder (a call
-/// of some eighty instructions) for the values of a few periods that patterns give: the
-/// largest multiple of the modulus by a power of two that fits is taken off, then the
-/// next smaller one, as long division does. Each subtraction takes at most twice the
-/// subtrahend from a value between it and its double, which floats do exactly
-/// (Sterbenz), so the remainder is the exact one the library returns.
-fn wrap(v: f64) -> f64 {
-    const LONG_DIVISION_BELOW: f64 = 1024.0 * MODULUS;
+/// `v % modulus` for a finite `v` and a modulus just above 1, bit for bit, without the
+/// library's remainder (a call of some eighty instructions) for the values of a few
+/// periods that patterns give: the largest multiple of the modulus by a power of two that
+/// fits is taken off, then the next smaller one, as long division does. Each subtraction
+/// takes at most twice the subtrahend from a value between it and its double, which
+/// floats do exactly (Sterbenz), so the remainder is the exact one the library returns.
+fn wrap(v: f64, modulus: f64) -> f64 {
     let mut r = v.abs();
-    if r >= LONG_DIVISION_BELOW {
-        return v % MODULUS;
+    if r >= 1024.0 * modulus {
+        return v % modulus;
     }
-    let mut d = MODULUS;
+    let mut d = modulus;
     while d * 2.0 <= r {
         d *= 2.0;
     }
-    while d >= MODULUS {
+    while d >= modulus {
         if r >= d {
             r -= d;
         }
@@ -482,10 +481,9 @@ fn wrap(v: f64) -> f64 {
     r.copysign(v)
 }
 
-/// The period of `shape`'s wrap: POV-Ray wraps with a modulus a hair above 1, so that a
-/// value of exactly 1 (the centre of a spherical pattern) keeps the last map entry; the
-/// conformance suite shows the hair is below 1e-6 (gradient at 1.75 prints 0.750000).
-const MODULUS: f64 = 1.000_000_1;
+/// The modulus POV-Ray 3.7 wraps negative pattern values with, measured: -12.75 gives
+/// 0.25012, -2 gives 0.00001 (292 values from -5000 to 60 fit to its single precision).
+const NEGATIVE_MODULUS: f64 = 1.000_01;
 
 /// Frequency and phase, then the wave type; the result lies in 0..1.
 fn shape(pattern: &Pattern, raw: f64) -> f64 {
@@ -496,13 +494,17 @@ fn shape(pattern: &Pattern, raw: f64) -> f64 {
     if !v.is_finite() {
         v = 0.0;
     }
-    // Most values are inside the modulus already, where the remainder would leave them as
-    // they are.
-    if v.abs() >= MODULUS {
-        v = wrap(v);
-    }
-    if v < 0.0 {
-        v += 1.0;
+    // POV-Ray's wrap into 0..1: values up to 1 stay (1, the centre of a spherical
+    // pattern, keeps the last map entry), larger ones lose their whole part, and negative
+    // ones take their remainder by a modulus a hair above 1, raised by 1 (and once more
+    // should that leave them negative).
+    if v > 1.0 {
+        v -= floor(v);
+    } else if v < 0.0 {
+        v = wrap(v, NEGATIVE_MODULUS) + 1.0;
+        if v < 0.0 {
+            v += 1.0;
+        }
     }
     let v = v.clamp(0.0, 1.0);
     match wave {
@@ -580,7 +582,35 @@ mod tests {
     }
 
     #[test]
+    fn values_wrap_as_povray_wraps_them() {
+        // POV-Ray 3.7's values of `function { y }` as a pigment, printed to 12 digits
+        // (its colours are single precision).
+        let pattern = Pattern::new(PatternKind::Gradient(DVec3::Y));
+        for (raw, povray) in [
+            (-12.75, 0.250120013952),
+            (-12.0, 0.000110000001),
+            (-2.5, 0.500020027161),
+            (-2.0, 0.000010000000),
+            (-1.0, 0.0),
+            (-1.0000001, 0.999999880791),
+            (-100000.5, 0.499989986420),
+            (0.0, 0.0),
+            (1.0, 1.0),
+            (2.0, 0.0),
+            (12.75, 0.75),
+            (1000.25, 0.25),
+        ] {
+            let ours = shape(&pattern, raw);
+            assert!(
+                (ours - povray).abs() < 1e-7,
+                "{raw}: ours {ours}, POV-Ray {povray}"
+            );
+        }
+    }
+
+    #[test]
     fn wrap_is_the_remainder() {
+        const MODULUS: f64 = NEGATIVE_MODULUS;
         let mut values = vec![
             MODULUS,
             -MODULUS,
@@ -600,7 +630,7 @@ mod tests {
             x += 0.013_7;
         }
         for v in values {
-            assert_eq!(wrap(v).to_bits(), (v % MODULUS).to_bits(), "{v}");
+            assert_eq!(wrap(v, MODULUS).to_bits(), (v % MODULUS).to_bits(), "{v}");
         }
     }
 
