@@ -47,13 +47,10 @@ pub fn render_with_warnings(
         corners: options.antialias && options.aa_method == 2,
     };
     radiosity::pretrace(&mut world, &camera, &frame);
-    // A scene of `#version 3.7` or later that gives no assumed_gamma gets 1.0, as POV-Ray
-    // 3.7 gives it (with a warning; measured: such a plane of rgb 0.5 lit head-on is written
-    // as 187, not 127); older scenes turn gamma handling off.
     let assumed_gamma = scene
         .settings
         .assumed_gamma
-        .or_else(|| scene.version.filter(|v| *v >= 3.7).map(|_| 1.0));
+        .or_else(|| analysis::scene::default_assumed_gamma(scene.version));
     let working = match assumed_gamma {
         Some(g) => Curve::from_gamma(Gamma::Power(g)),
         None => Curve::Identity,

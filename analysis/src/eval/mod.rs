@@ -364,7 +364,8 @@ impl<'a> Evaluator<'a> {
     /// (or one without `#version`) without gamma handling. It points at the `#version`
     /// directive that decided, or at the scene's start.
     fn missing_assumed_gamma(&self, main: &str) -> Diagnostic {
-        let message = if self.version_set && self.version >= 3.7 {
+        let version = self.version_set.then_some(self.version);
+        let message = if crate::scene::default_assumed_gamma(version).is_some() {
             "assumed_gamma is not set in this POV-Ray 3.7 scene; taking assumed_gamma 1.0"
         } else {
             "assumed_gamma is not set, so colours are not gamma corrected, as in scenes older than POV-Ray 3.7"

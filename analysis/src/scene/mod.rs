@@ -54,5 +54,13 @@ pub struct Scene {
     pub version: Option<f64>,
 }
 
+/// The assumed_gamma a scene that sets none works at, by its `#version`: 1.0 from 3.7 on,
+/// as POV-Ray 3.7 takes it (with a warning; measured: such a plane of rgb 0.5 lit head-on
+/// is written as 187, not 127); older scenes and those without `#version` get no gamma
+/// handling (`None`).
+pub fn default_assumed_gamma(version: Option<f64>) -> Option<f64> {
+    version.filter(|v| *v >= 3.7).map(|_| 1.0)
+}
+
 /// Where an entity was written, so that the renderer can report problems at the source.
 pub type Origin = Option<Span>;
