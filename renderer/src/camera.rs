@@ -75,9 +75,10 @@ impl Camera {
         Ok(c)
     }
 
-    /// A mesh camera's faces, which give the rays pixel by pixel.
+    /// A mesh camera whose faces give the rays pixel by pixel, whatever the position in
+    /// the pixel (distributions 0 to 2; the uv mapped one goes through [`Camera::ray`]).
     pub fn mesh(&self) -> Option<&MeshRays> {
-        self.mesh.as_ref()
+        self.mesh.as_ref().filter(|mesh| mesh.by_pixel())
     }
 
     /// How a perspective or orthographic camera's rays leave it, for the vista of the
@@ -254,10 +255,12 @@ impl Camera {
     /// other camera's rays go through.
     #[inline(never)]
     fn mesh_ray(&self, x: f64, y: f64, width: f64, height: f64) -> Option<Ray> {
+        let mesh = self.mesh.as_ref()?;
+        if !mesh.by_pixel() {
+            return mesh.uv_ray(x, y, (width, height));
+        }
         let size = (width as u32, height as u32);
-        self.mesh
-            .as_ref()?
-            .pixel_ray(0, MeshRays::pixel_at(x, y, size), size)
+        mesh.pixel_ray(0, MeshRays::pixel_at(x, y, size), size)
     }
 
     /// The direction at azimuth `phi` around the view axis and `theta` away from it.

@@ -161,10 +161,6 @@ impl Evaluator<'_> {
                 format!("the mesh_camera distribution must be 0 to 3, not {distribution}"),
             ));
         }
-        if distribution == 3 {
-            // POV-Ray's image positions for its uv mapping are not known well enough yet.
-            return Err(self.unsupported(&distribution_at, "mesh_camera distribution 3"));
-        }
         self.eat(COMMA)?;
         if self.value_follows()? {
             let at = self.next()?;
@@ -410,8 +406,8 @@ mod tests {
             "mesh_camera distribution 2 shoots 1 ray per pixel, not 2"
         );
         assert_eq!(
-            error("mesh_camera { 1 3 mesh { M } }"),
-            "not supported yet: mesh_camera distribution 3"
+            error("mesh_camera { 2 3 mesh { M } mesh { M } }"),
+            "mesh_camera distribution 3 shoots 1 ray per pixel, not 2"
         );
         assert_eq!(
             error("mesh_camera { 1 0 }"),

@@ -18,15 +18,15 @@ pub enum CameraKind {
         h_angle: f64,
         v_angle: f64,
     },
-    /// `mesh_camera { }`: a ray from each face of meshes, pixel by pixel.
+    /// `mesh_camera { }`: rays from the faces of meshes.
     Mesh(Arc<MeshCamera>),
 }
 
 /// `mesh_camera { rays distribution [max_distance] mesh { } ... [smooth] }`: POV-Ray 3.7's
 /// camera whose rays leave the faces of meshes along their normals (distributions 0 to 2:
 /// one face per pixel) or from the point of a face that a pixel's uv coordinates name
-/// (distribution 3, which the renderer does not draw yet). The camera's `location` z moves each ray's origin along the normal,
-/// and a negative `direction` z turns the rays around.
+/// (distribution 3). The camera's `location` z moves each ray's origin along the normal, and
+/// a negative `direction` z turns the rays around.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MeshCamera {
     pub rays_per_pixel: u32,
