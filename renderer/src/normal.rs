@@ -195,8 +195,10 @@ fn bumped(
     let bumped = match pattern.kind {
         PatternKind::Bumps => local_normal + noise::vector(turbulent) * bump_size,
         PatternKind::Dents => {
+            // Along the vector noise, scaled by the cube of the scalar noise: POV-Ray's
+            // normals, measured from renders lit from three directions, agree exactly.
             let depth = noise::noise(turbulent).powi(3);
-            local_normal + noise::vector(turbulent) * (-bump_size * depth)
+            local_normal + noise::vector(turbulent) * (bump_size * depth)
         }
         PatternKind::Wrinkles => {
             let mut v = DVec3::ZERO;
