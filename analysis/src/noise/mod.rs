@@ -86,6 +86,16 @@ fn lattice_floor(x: f64) -> f64 {
     }
 }
 
+/// POV-Ray's hash of an integer cube, 0..4096: the lattice hash applied to each coordinate
+/// (taken modulo 4096) in turn, x first, each result xor the next. The cell patterns
+/// (cells, crackle) number their cubes by it, without the noise's lattice offset.
+pub fn cube_hash(x: i64, y: i64, z: i64) -> usize {
+    let at = |c: i64| (c & 4095) as usize;
+    let hx = usize::from(HASH[at(x)]);
+    let hxy = usize::from(HASH[(hx ^ at(y)) & 4095]);
+    usize::from(HASH[(hxy ^ at(z)) & 4095])
+}
+
 fn s_curve(t: f64) -> f64 {
     t * t * (3.0 - 2.0 * t)
 }
