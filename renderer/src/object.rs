@@ -14,6 +14,7 @@ use crate::ray::{Ray, RayKind};
 use crate::shapes::{Root, Roots, Shape, Span};
 use crate::texture_point::TexturePoint;
 use analysis::pattern::Facing;
+use analysis::scene::LightPhotons;
 use analysis::scene::mesh::FaceTexture;
 use glam::{DAffine3, DVec3};
 use std::sync::Arc;
@@ -283,10 +284,13 @@ impl Leaf {
         })
     }
 
-    /// Whether this opaque standalone leaf crosses the query's interval.
-    pub fn blocks(&self, q: &Query) -> bool {
+    /// Whether this standalone leaf crosses the query's interval and stops the light there:
+    /// opaque, or a target refracting the photons of the light whose settings are
+    /// `photons_stop` (see [`crate::photons::SurfacePhotons::stops_light_for_photons`]).
+    pub fn blocks(&self, q: &Query, photons_stop: Option<&LightPhotons>) -> bool {
         self.standalone
-            && !self.transmits
+            && (!self.transmits
+                || photons_stop.is_some_and(|light| self.photons.stops_light_for_photons(light)))
             && self.visibility.sees(q.kind)
             && self.first_hit(q).is_some()
     }

@@ -132,8 +132,9 @@ pub struct Tracer<'w> {
     /// The photons lighting the current point, as lights, and the space to gather them.
     photon_lights: Vec<(DVec3, DVec3)>,
     gather_scratch: GatherScratch,
-    /// The opaque object that last blocked a shadow ray: neighbouring shadow rays are
-    /// usually blocked by it too, and one shape test is cheaper than the search.
+    /// The object that last stopped a shadow ray, opaque or a photon target that stops its
+    /// light: neighbouring shadow rays are usually stopped by it too, and one shape test
+    /// is cheaper than the search.
     last_blocker: Option<&'w Leaf>,
     /// The shadow samples of an area light's grid for the current point, kept between
     /// points to spare an allocation each time.
@@ -269,22 +270,21 @@ impl<'w> Tracer<'w> {
         total
     }
 
-    /// Whether surfaces of one opaque layer may skip the layered model: without radiosity, photons or
+    /// Whether surfaces of one opaque layer may skip the layered model: without radiosity or
     /// subsurface light, which need its bookkeeping, and with the bailout letting the top
     /// layer show and nothing through it.
     fn shades_plainly(&self) -> bool {
         let world = self.world;
         self.radiosity.is_none()
-            && world.photons.is_none()
             && world.subsurface.is_none()
             && (0.0..1.0).contains(&world.adc_bailout)
     }
 
     /// [`Self::shade_layers`] for a point of a surface of one opaque layer without bumps
     /// or reflection (see [`Leaf::opaque_layer`]) whose pigment there is `colour`, as
-    /// [`Self::shades_plainly`] allows: its own ambient and emitted light and the light
-    /// sources' — the layer shows nothing beneath or behind it and reflects nothing, so
-    /// there is nothing to stack, filter or trace further.
+    /// [`Self::shades_plainly`] allows: its own ambient and emitted light, the light
+    /// sources' and the gathered photons' — the layer shows nothing beneath or behind it
+    /// and reflects nothing, so there is nothing to stack, filter or trace further.
     fn shade_plain(
         &mut self,
         ray: &Ray,
@@ -311,6 +311,21 @@ impl<'w> Tracer<'w> {
             };
             for light in world.lights_for(leaf) {
                 own += self.direct_light(light, &shading);
+            }
+            if let Some(photons) = &world.photons
+                && leaf.photons.collect()
+            {
+                let mut photon_lights = std::mem::take(&mut self.photon_lights);
+                photons.lights_at(p, normal, &mut self.gather_scratch, &mut photon_lights);
+                for &(light, from) in &photon_lights {
+                    let lit = Lit {
+                        colour: light,
+                        direction: from,
+                        highlights: true,
+                    };
+                    own += self.lit(&lit, &shading);
+                }
+                self.photon_lights = photon_lights;
             }
         }
         Sample::new(own, 0.0)
@@ -755,7 +770,7 @@ impl<'w> Tracer<'w> {
         };
         let mut q = segment(self, origin, remaining);
         if let Some(blocker) = self.last_blocker
-            && blocker.blocks(&q)
+            && blocker.blocks(&q, photons_stop)
         {
             return DVec3::ZERO;
         }
@@ -773,10 +788,9 @@ impl<'w> Tracer<'w> {
                 return colour;
             };
             let leaf: &'w Leaf = hit.leaf;
-            if photons_stop.is_some_and(|light| leaf.photons.stops_light_for_photons(light)) {
-                return DVec3::ZERO;
-            }
-            if !leaf.transmits {
+            let stops =
+                photons_stop.is_some_and(|light| leaf.photons.stops_light_for_photons(light));
+            if stops || !leaf.transmits {
                 if leaf.standalone {
                     self.last_blocker = Some(leaf);
                 }

@@ -274,17 +274,25 @@ impl PhotonMap {
             return;
         };
         let normal = normal.as_vec3();
-        // Power and power-weighted direction from the front and from behind.
-        let mut sides = [(Vec3::ZERO, Vec3::ZERO); 2];
+        // Power and power-weighted direction from the front and from behind, each side's
+        // sums apart rather than in an array indexed by the side, which the plugin would
+        // keep in memory.
+        let (mut front, mut behind) = ((Vec3::ZERO, Vec3::ZERO), (Vec3::ZERO, Vec3::ZERO));
         for &(_, index) in &scratch.found {
             let photon = self.tree.photon(index);
             let from = -photon.direction;
-            let side = &mut sides[usize::from(from.dot(normal) < 0.0)];
-            side.0 += photon.power;
-            side.1 += from * photon.power.element_sum();
+            let add = |(power, direction): &mut (Vec3, Vec3)| {
+                *power += photon.power;
+                *direction += from * photon.power.element_sum();
+            };
+            if from.dot(normal) < 0.0 {
+                add(&mut behind);
+            } else {
+                add(&mut front);
+            }
         }
         let area = std::f64::consts::PI * f64::from(area_radius2);
-        for (power, direction) in sides {
+        for (power, direction) in [front, behind] {
             let Some(direction) = direction.try_normalize() else {
                 continue;
             };

@@ -196,6 +196,7 @@ impl Shape {
             Shape::Math(s) => return s.first_hit(ray, tmin, tmax),
             Shape::Mesh(s) => return s.first_hit(ray, tmin, tmax),
             Shape::Torus(s) => return s.first_hit(ray, tmin, tmax),
+            Shape::Disc(s) => return s.first_hit(ray, tmin, tmax),
             _ => {}
         }
         let mut roots = Roots::new();
