@@ -145,7 +145,11 @@ fn mapped(pattern: &Pattern, map: &BlendMap<scene::Normal>, at: &TexturePoint, n
 /// warps (the geometric warps leave normals alone). A uv-mapped normal's `placement`
 /// (the object's transformations, which do not move its pattern) turns it too.
 fn into_pattern_space(pattern: &Pattern, placement: Option<&Transform>) -> DMat3 {
-    let mut m = frame(pattern, placement).matrix.matrix3.transpose();
+    let mut m = match placement {
+        Some(placement) => pattern.transform.then(placement).matrix.matrix3,
+        None => pattern.transform.matrix.matrix3,
+    }
+    .transpose();
     for warp in pattern.warps.iter().rev() {
         if let Warp::Transform(t) = warp {
             m = t.matrix.matrix3.transpose() * m;
@@ -154,16 +158,15 @@ fn into_pattern_space(pattern: &Pattern, placement: Option<&Transform>) -> DMat3
     m
 }
 
-/// The transformation normals are carried through: the pattern's, then the placement.
-fn frame(pattern: &Pattern, placement: Option<&Transform>) -> Transform {
-    match placement {
-        Some(p) => pattern.transform.then(p),
-        None => pattern.transform,
-    }
-}
-
+/// The way back from [`into_pattern_space`]. Without a placement the pattern's own
+/// matrices are read in place: the plugin copied the whole transformation for every
+/// perturbed normal.
 fn out_of_pattern_space(pattern: &Pattern, placement: Option<&Transform>) -> DMat3 {
-    let mut m = frame(pattern, placement).inverse.matrix3.transpose();
+    let mut m = match placement {
+        Some(placement) => pattern.transform.then(placement).inverse.matrix3,
+        None => pattern.transform.inverse.matrix3,
+    }
+    .transpose();
     for warp in pattern.warps.iter().rev() {
         if let Warp::Transform(t) = warp {
             m *= t.inverse.matrix3.transpose();
