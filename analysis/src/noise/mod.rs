@@ -125,27 +125,43 @@ where
     let hash_x = |i| usize::from(HASH[at(x, i)]);
     let hash_xy = |hx: usize, j| usize::from(HASH[(hx ^ at(y, j)) & 4095]);
     let hash = |hxy: usize, k| usize::from(HASH[(hxy ^ at(z, k)) & 4095]) & 255;
-    let (h0, h1) = (hash_x(0), hash_x(1));
-    let (h00, h01, h10, h11) = (
-        hash_xy(h0, 0),
-        hash_xy(h0, 1),
-        hash_xy(h1, 0),
-        hash_xy(h1, 1),
-    );
+    let h0 = hash_x(0);
     let (sx, sy, sz) = (s_curve(t.x), s_curve(t.y), s_curve(t.z));
-    let lerp = |s: f64, a: T, b: T| a + (b - a) * s;
     // The corners along z of the edge from (i, j, 0), blended.
     let edge = |hxy: usize, i: f64, j: f64| {
         let d = t - DVec3::new(i, j, 0.0);
         let near = corner(hash(hxy, 0), d);
-        let far = corner(hash(hxy, 1), d - DVec3::Z);
-        lerp(sz, near, far)
+        blend(sz, near, || corner(hash(hxy, 1), d - DVec3::Z))
     };
-    lerp(
+    blend(
         sx,
-        lerp(sy, edge(h00, 0.0, 0.0), edge(h01, 0.0, 1.0)),
-        lerp(sy, edge(h10, 1.0, 0.0), edge(h11, 1.0, 1.0)),
+        blend(sy, edge(hash_xy(h0, 0), 0.0, 0.0), || {
+            edge(hash_xy(h0, 1), 0.0, 1.0)
+        }),
+        || {
+            let h1 = hash_x(1);
+            blend(sy, edge(hash_xy(h1, 0), 1.0, 0.0), || {
+                edge(hash_xy(h1, 1), 1.0, 1.0)
+            })
+        },
     )
+}
+
+/// `near + (far - near) s`, without finding `far` when `s` is 0: then the blend adds a
+/// zero to `near`, which leaves it as it is (but for the sign of a zero, which no sum of
+/// octaves or offset of a point keeps). Points on a plane of the lattice take this way
+/// along its axis: a floor at y = 0, say, whose rounding errors vanish against
+/// [`LATTICE_OFFSET`] at every octave, blends four corners instead of eight.
+#[inline(always)]
+fn blend<T>(s: f64, near: T, far: impl FnOnce() -> T) -> T
+where
+    T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T>,
+{
+    if s == 0.0 {
+        near
+    } else {
+        near + (far() - near) * s
+    }
 }
 
 /// POV-Ray's original noise less 0.5: roughly −1..1, 0 on average.
@@ -192,6 +208,14 @@ pub fn octave_noise(p: DVec3, generator: u8) -> f64 {
 /// itself, the others taking their corners' coefficients four and eight entries further.
 /// One cell's work, not three, for three values.
 pub fn vector(p: DVec3) -> DVec3 {
+    vector_inline(p)
+}
+
+/// [`vector`], inlined into the octave loop of [`turbulence`]: the interpreted plugin
+/// pays for each call's frame and for the result passed back through memory, six times
+/// for each point of the usual turbulence.
+#[inline(always)]
+fn vector_inline(p: DVec3) -> DVec3 {
     let value = blend_cell(p, |hash, d| {
         let [value, x, y, z] = VECTOR_CORNERS[hash];
         value + x * d.x + y * d.y + z * d.z
@@ -207,7 +231,7 @@ pub fn turbulence(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
     let mut sum = DVec3::ZERO;
     let (mut scale, mut amplitude) = (1.0, 1.0);
     for _ in 0..octaves.max(1) {
-        sum += vector(p * scale) * amplitude;
+        sum += vector_inline(p * scale) * amplitude;
         scale *= lambda;
         amplitude *= omega;
     }
