@@ -31,21 +31,26 @@ const POSITIONS: [[f64; 3]; SOURCES] = [
     [0.564_897_156_1, 0.722_039_852_7, -0.399_436_554_3],
 ];
 
-/// The sources and each one's frequency for `waves`.
-fn sources() -> &'static [(DVec3, f64); SOURCES] {
-    static TABLE: std::sync::OnceLock<[(DVec3, f64); SOURCES]> = std::sync::OnceLock::new();
-    TABLE.get_or_init(|| {
-        let mut frequency: i32 = -560_851_967;
-        std::array::from_fn(|i| {
-            frequency = frequency.wrapping_mul(1_812_433_253).wrapping_add(12_345);
-            let k = f64::from((frequency >> 16) & 0x7fff) * 0.000_030_518_509_476 + 0.01;
-            (DVec3::from_array(POSITIONS[i]), k)
-        })
-    })
+/// The sources and each one's frequency for `waves`, worked out when the program is built.
+static SOURCE_TABLE: [(DVec3, f64); SOURCES] = sources();
+
+const fn sources() -> [(DVec3, f64); SOURCES] {
+    let mut table = [(DVec3::ZERO, 0.0); SOURCES];
+    let mut frequency: i32 = -560_851_967;
+    let mut i = 0;
+    while i < SOURCES {
+        frequency = frequency.wrapping_mul(1_812_433_253).wrapping_add(12_345);
+        let k = ((frequency >> 16) & 0x7fff) as f64 * 0.000_030_518_509_476 + 0.01;
+        let [x, y, z] = POSITIONS[i];
+        table[i] = (DVec3::new(x, y, z), k);
+        i += 1;
+    }
+    table
 }
 
 /// The per-source terms: the offset from the source, its distance (1 at the source
 /// itself), the sine of the wave there, and the source's weight.
+#[inline(always)]
 fn each_source(
     p: DVec3,
     frequency: f64,
@@ -53,7 +58,7 @@ fn each_source(
     own: bool,
     mut f: impl FnMut(DVec3, f64, f64, f64),
 ) {
-    for (source, own_frequency) in sources() {
+    for (source, own_frequency) in &SOURCE_TABLE {
         let d = p - *source;
         let length = match d.length() {
             0.0 => 1.0,
@@ -85,15 +90,16 @@ pub fn waves(p: DVec3, frequency: f64, phase: f64) -> f64 {
 /// each source tilts the normal along the direction away from it by its wave's sine.
 pub fn push(p: DVec3, frequency: f64, phase: f64, own_frequencies: bool) -> DVec3 {
     let mut push = DVec3::ZERO;
-    each_source(
-        p,
-        frequency,
-        phase,
-        own_frequencies,
-        |d, length, sine, weight| {
-            push += d * (sine * weight / (length * SOURCES as f64));
-        },
-    );
+    let mut add = |d: DVec3, length: f64, sine: f64, weight: f64| {
+        push += d * (sine * weight / (length * SOURCES as f64));
+    };
+    // `ripples` apart, with its frequencies and weights of 1 known: the multiplications
+    // by them vanish, and with them a division per source, giving the very same values.
+    if own_frequencies {
+        each_source(p, frequency, phase, true, &mut add);
+    } else {
+        each_source(p, frequency, phase, false, &mut add);
+    }
     push
 }
 
