@@ -110,6 +110,14 @@ fn corner_value(c: &[f64; 4], d: DVec3) -> f64 {
 /// The blend of the eight corners of the cell around `p`, given each corner's value
 /// `corner(hash, offset)` from its hash (0..256) and the point's offset from it. One blend
 /// serves one noise ([`signed`]) and three sharing their hashes ([`vector`]).
+///
+/// A blend whose weight is 0 keeps its near end without finding its far one: the blend
+/// would add a zero to it, which leaves it as it is (but for the sign of a zero, which no
+/// sum of octaves or offset of a point keeps). Points on a plane of the lattice take this
+/// way along its axis: a floor at y = 0, say, whose rounding errors vanish against
+/// [`LATTICE_OFFSET`] at every octave, blends four corners instead of eight. The parts
+/// are functions inlined by force, not closures, which the compiler kept out of line and
+/// the interpreted plugin paid a call for each.
 #[inline(always)]
 fn blend_cell<T>(p: DVec3, corner: impl Fn(usize, DVec3) -> T) -> T
 where
@@ -117,51 +125,70 @@ where
 {
     let q = p + DVec3::splat(LATTICE_OFFSET);
     let f = DVec3::new(lattice_floor(q.x), lattice_floor(q.y), lattice_floor(q.z));
-    let t = q - f;
-    // The cell's coordinates modulo 4096 (two's complement wraps negatives as rem_euclid
-    // does); the masks also spare the table lookups their bounds checks.
-    let (x, y, z) = (f.x as i64, f.y as i64, f.z as i64);
-    let at = |c: i64, step: i64| (c.wrapping_add(step) & 4095) as usize;
-    let hash_x = |i| usize::from(HASH[at(x, i)]);
-    let hash_xy = |hx: usize, j| usize::from(HASH[(hx ^ at(y, j)) & 4095]);
-    let hash = |hxy: usize, k| usize::from(HASH[(hxy ^ at(z, k)) & 4095]) & 255;
-    let h0 = hash_x(0);
-    let (sx, sy, sz) = (s_curve(t.x), s_curve(t.y), s_curve(t.z));
-    // The corners along z of the edge from (i, j, 0), blended.
-    let edge = |hxy: usize, i: f64, j: f64| {
-        let d = t - DVec3::new(i, j, 0.0);
-        let near = corner(hash(hxy, 0), d);
-        blend(sz, near, || corner(hash(hxy, 1), d - DVec3::Z))
+    let cell = Cell {
+        x: f.x as i64,
+        y: f.y as i64,
+        z: f.z as i64,
+        t: q - f,
     };
-    blend(
-        sx,
-        blend(sy, edge(hash_xy(h0, 0), 0.0, 0.0), || {
-            edge(hash_xy(h0, 1), 0.0, 1.0)
-        }),
-        || {
-            let h1 = hash_x(1);
-            blend(sy, edge(hash_xy(h1, 0), 1.0, 0.0), || {
-                edge(hash_xy(h1, 1), 1.0, 1.0)
-            })
-        },
-    )
+    let s = DVec3::new(s_curve(cell.t.x), s_curve(cell.t.y), s_curve(cell.t.z));
+    let near = cell.face(&corner, s, 0);
+    if s.x == 0.0 {
+        return near;
+    }
+    let far = cell.face(&corner, s, 1);
+    near + (far - near) * s.x
 }
 
-/// `near + (far - near) s`, without finding `far` when `s` is 0: then the blend adds a
-/// zero to `near`, which leaves it as it is (but for the sign of a zero, which no sum of
-/// octaves or offset of a point keeps). Points on a plane of the lattice take this way
-/// along its axis: a floor at y = 0, say, whose rounding errors vanish against
-/// [`LATTICE_OFFSET`] at every octave, blends four corners instead of eight.
-#[inline(always)]
-fn blend<T>(s: f64, near: T, far: impl FnOnce() -> T) -> T
-where
-    T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T>,
-{
-    if s == 0.0 {
-        near
-    } else {
-        near + (far() - near) * s
+/// A lattice cell: its coordinates and a point's fractions in it.
+struct Cell {
+    x: i64,
+    y: i64,
+    z: i64,
+    t: DVec3,
+}
+
+impl Cell {
+    /// The blend over y and z (weights `s.y` and `s.z`) of the corners of the face at x
+    /// offset `i` (0 or 1).
+    #[inline(always)]
+    fn face<T>(&self, corner: &impl Fn(usize, DVec3) -> T, s: DVec3, i: i64) -> T
+    where
+        T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T>,
+    {
+        let hx = usize::from(HASH[lattice(self.x, i)]);
+        let near = self.edge(corner, hx, s.z, i, 0);
+        if s.y == 0.0 {
+            return near;
+        }
+        let far = self.edge(corner, hx, s.z, i, 1);
+        near + (far - near) * s.y
     }
+
+    /// The blend along z (weight `sz`) of the two corners at x offset `i` and y offset
+    /// `j`, below the hash `hx` of the x coordinate.
+    #[inline(always)]
+    fn edge<T>(&self, corner: &impl Fn(usize, DVec3) -> T, hx: usize, sz: f64, i: i64, j: i64) -> T
+    where
+        T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T>,
+    {
+        let hxy = usize::from(HASH[(hx ^ lattice(self.y, j)) & 4095]);
+        let hash = |k| usize::from(HASH[(hxy ^ lattice(self.z, k)) & 4095]) & 255;
+        let d = self.t - DVec3::new(i as f64, j as f64, 0.0);
+        let near = corner(hash(0), d);
+        if sz == 0.0 {
+            return near;
+        }
+        let far = corner(hash(1), d - DVec3::Z);
+        near + (far - near) * sz
+    }
+}
+
+/// A cell coordinate `step` further, modulo 4096 (two's complement wraps negatives as
+/// rem_euclid does); the masks also spare the table lookups their bounds checks.
+#[inline(always)]
+fn lattice(c: i64, step: i64) -> usize {
+    (c.wrapping_add(step) & 4095) as usize
 }
 
 /// POV-Ray's original noise less 0.5: roughly −1..1, 0 on average.
