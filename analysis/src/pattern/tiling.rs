@@ -40,32 +40,42 @@ struct Edge {
     offset: f64,
 }
 
+/// A tile: its type, and its edges.
 struct Tile {
     kind: f64,
     edges: Vec<Edge>,
 }
 
-impl Tile {
-    /// The least of the ramps of the tile's edges at `q` (NaN ramps left out).
-    fn ramp(&self, q: DVec2) -> f64 {
-        self.edges.iter().fold(f64::INFINITY, |least, e| {
-            least.min(e.normal.dot(q) - e.offset)
-        })
-    }
+/// The least of the ramps of `edges` at `q` (NaN ramps left out).
+fn ramp(edges: &[Edge], q: DVec2) -> f64 {
+    edges.iter().fold(f64::INFINITY, |least, e| {
+        least.min(e.normal.dot(q) - e.offset)
+    })
+}
 
-    /// [`Tile::ramp`] when it is not negative (the tile holds `q`); `None` from the first
-    /// negative ramp on.
-    fn ramp_if_holding(&self, q: DVec2) -> Option<f64> {
-        let mut least = f64::INFINITY;
-        for e in &self.edges {
-            let ramp = e.normal.dot(q) - e.offset;
-            if ramp < 0.0 {
-                return None;
-            }
-            least = least.min(ramp);
+/// [`ramp`] when it is not negative (the tile holds `q`); `None` from the first negative
+/// ramp on.
+fn ramp_if_holding(edges: &[Edge], q: DVec2) -> Option<f64> {
+    let mut least = f64::INFINITY;
+    for e in edges {
+        let ramp = e.normal.dot(q) - e.offset;
+        if ramp < 0.0 {
+            return None;
         }
-        Some(least)
+        // As `least.min(ramp)`: a NaN ramp is left out, and `least` is never NaN.
+        if ramp < least {
+            least = ramp;
+        }
     }
+    Some(least)
+}
+
+/// A tile listed for a grid square: its type and the range of [`Tiling::edges`] that
+/// holds its edges there. Every square's tiles share one list of edges, so that a search
+/// reads them in a row rather than through a list of its own for each tile.
+struct Candidate {
+    kind: f64,
+    edges: Range<u32>,
 }
 
 /// How many grid squares the period cell is cut into along each of its sides.
@@ -75,7 +85,7 @@ const GRID: usize = 16;
 /// the period cell spanned by `a` and `b` from the origin, and for each square of the
 /// cell's grid (row by row in the `b` direction) the range of `candidates` that lists the
 /// copies of its tiles reaching into it, each with only those of its edges that matter
-/// there.
+/// there (in `edges`).
 struct Tiling {
     types: f64,
     a: DVec2,
@@ -83,7 +93,8 @@ struct Tiling {
     dual_a: DVec2,
     dual_b: DVec2,
     squares: Vec<Range<u32>>,
-    candidates: Vec<Tile>,
+    candidates: Vec<Candidate>,
+    edges: Vec<Edge>,
 }
 
 /// Periodic tiling `number` (1 to 24), made ready the first time a scene uses
@@ -165,9 +176,11 @@ pub fn value(number: u8, p: DVec3) -> f64 {
 }
 
 /// The grid square along one side of the period cell that holds the fraction `t` of it
-/// (`t` in 0..=1, where rounding can give 1; NaN goes to the first square).
+/// (`t` in 0..=1, where rounding can give 1; NaN goes to the first square). Through
+/// `u32`, whose conversion from a float is a few instructions where `usize`'s, for values
+/// up to 2^64, is a dozen more.
 fn grid_index(t: f64) -> usize {
-    ((t * GRID as f64) as usize).min(GRID - 1)
+    ((t * GRID as f64) as u32 as usize).min(GRID - 1)
 }
 
 impl Tiling {
@@ -176,7 +189,14 @@ impl Tiling {
     /// every tile would find.
     fn value_in_cell(&self, u: f64, v: f64) -> f64 {
         let Range { start, end } = self.squares[grid_index(v) * GRID + grid_index(u)].clone();
-        let tiles = self.candidates[start as usize..end as usize].iter();
+        let tiles = self.candidates[start as usize..end as usize]
+            .iter()
+            .map(|c| {
+                (
+                    c.kind,
+                    &self.edges[c.edges.start as usize..c.edges.end as usize],
+                )
+            });
         self.value_among(tiles, self.a * u + self.b * v)
     }
 
@@ -184,18 +204,22 @@ impl Tiling {
     /// has every ramp non-negative, and the search leaves every other tile at its first
     /// negative ramp; a point that rounding leaves just outside every tile takes the first
     /// one it is least outside of.
-    fn value_among<'a>(&self, tiles: impl Iterator<Item = &'a Tile> + Clone, q: DVec2) -> f64 {
+    fn value_among<'a>(
+        &self,
+        tiles: impl Iterator<Item = (f64, &'a [Edge])> + Clone,
+        q: DVec2,
+    ) -> f64 {
         let value = |kind: f64, ramp: f64| (kind + 1.0 - ramp.clamp(0.0, 1.0)) / self.types;
-        for tile in tiles.clone() {
-            if let Some(ramp) = tile.ramp_if_holding(q) {
-                return value(tile.kind, ramp);
+        for (kind, edges) in tiles.clone() {
+            if let Some(ramp) = ramp_if_holding(edges, q) {
+                return value(kind, ramp);
             }
         }
         let mut best = (f64::NEG_INFINITY, 0.0);
-        for tile in tiles {
-            let ramp = tile.ramp(q);
-            if ramp > best.0 {
-                best = (ramp, tile.kind);
+        for (kind, edges) in tiles {
+            let least = ramp(edges, q);
+            if least > best.0 {
+                best = (least, kind);
             }
         }
         value(best.1, best.0)
@@ -207,7 +231,7 @@ impl Tiling {
         let dual_a = DVec2::new(b.y, -b.x) / det;
         let dual_b = DVec2::new(-a.y, a.x) / det;
         let (tiles, extents) = copies(layout, dual_a, dual_b);
-        let (squares, candidates) = grid_candidates(&extents, &tiles, a, b);
+        let (squares, candidates, edges) = grid_candidates(&extents, &tiles, a, b);
         Tiling {
             types: f64::from(layout.types),
             a,
@@ -216,6 +240,7 @@ impl Tiling {
             dual_b,
             squares,
             candidates,
+            edges,
         }
     }
 }
@@ -270,8 +295,8 @@ fn copies(layout: &Layout, dual_a: DVec2, dual_b: DVec2) -> (Vec<Tile>, Vec<(DVe
 }
 
 /// For each grid square of the period cell (row by row in `v`), the range of the returned
-/// list that names, in order, the tiles whose `extents` (lowest and highest `u`, `v`)
-/// reach into it. Extents are widened by a margin far above rounding, so a point that
+/// candidates that names, in order, the tiles whose `extents` (lowest and highest `u`,
+/// `v`) reach into it, and the list of edges the candidates' ranges point into. Extents are widened by a margin far above rounding, so a point that
 /// rounding moves across a square's side still finds its tile.
 ///
 /// Each listed tile keeps only the edges whose ramp falls below 1 somewhere in the square
@@ -284,7 +309,7 @@ fn grid_candidates(
     tiles: &[Tile],
     a: DVec2,
     b: DVec2,
-) -> (Vec<Range<u32>>, Vec<Tile>) {
+) -> (Vec<Range<u32>>, Vec<Candidate>, Vec<Edge>) {
     const MARGIN: f64 = 1e-6;
     let squares_of = |lo: f64, hi: f64| {
         let first = ((lo - MARGIN) * GRID as f64).floor().max(0.0) as usize;
@@ -300,6 +325,7 @@ fn grid_candidates(
         }
     }
     let mut candidates = Vec::new();
+    let mut kept = Vec::new();
     let squares = lists
         .into_iter()
         .enumerate()
@@ -308,21 +334,27 @@ fn grid_candidates(
             let corners = [(i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1)]
                 .map(|(i, j)| a * (i as f64 / GRID as f64) + b * (j as f64 / GRID as f64));
             let start = candidates.len() as u32;
-            candidates.extend(list.into_iter().map(|index: u16| {
+            for index in list {
                 let tile = &tiles[usize::from(index)];
-                let edges = tile.edges.iter().filter(|e| {
-                    let least = corners.iter().map(|c| e.normal.dot(*c) - e.offset);
-                    least.fold(f64::INFINITY, f64::min) < 1.0 + MARGIN
-                });
-                Tile {
+                let first = kept.len() as u32;
+                kept.extend(
+                    tile.edges
+                        .iter()
+                        .filter(|e| {
+                            let least = corners.iter().map(|c| e.normal.dot(*c) - e.offset);
+                            least.fold(f64::INFINITY, f64::min) < 1.0 + MARGIN
+                        })
+                        .cloned(),
+                );
+                candidates.push(Candidate {
                     kind: tile.kind,
-                    edges: edges.cloned().collect(),
-                }
-            }));
+                    edges: first..kept.len() as u32,
+                });
+            }
             start..candidates.len() as u32
         })
         .collect();
-    (squares, candidates)
+    (squares, candidates, kept)
 }
 
 /// The corners of the convex polygon bounded by `lines` (normal, offset, width), whose
@@ -409,7 +441,10 @@ mod tests {
                 for j in 0..40 {
                     let q = tiling.a * ((f64::from(i) + 0.37) / 40.0)
                         + tiling.b * ((f64::from(j) + 0.61) / 40.0);
-                    let holding = tiles.iter().filter(|tile| tile.ramp(q) > 1e-9).count();
+                    let holding = tiles
+                        .iter()
+                        .filter(|tile| ramp(&tile.edges, q) > 1e-9)
+                        .count();
                     assert_eq!(holding, 1, "tiling {number} at {q}");
                 }
             }
@@ -429,7 +464,8 @@ mod tests {
                 for j in 0..=steps {
                     let (u, v) = (i as f64 / steps as f64, j as f64 / steps as f64);
                     let q = tiling.a * u + tiling.b * v;
-                    let everywhere = tiling.value_among(tiles.iter(), q);
+                    let everywhere =
+                        tiling.value_among(tiles.iter().map(|t| (t.kind, t.edges.as_slice())), q);
                     assert_eq!(tiling.value_in_cell(u, v), everywhere, "at {q}");
                 }
             }
