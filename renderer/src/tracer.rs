@@ -108,6 +108,13 @@ impl World {
         self.light_set(leaf.light_set)
     }
 
+    /// [`Self::lights_for`], each with its place in `lights`.
+    fn numbered_lights_for(&self, leaf: &Leaf) -> impl Iterator<Item = (usize, &Light)> {
+        self.light_sets[leaf.light_set as usize]
+            .iter()
+            .map(|&i| (i as usize, &self.lights[i as usize]))
+    }
+
     /// The lights of light set `set` (0: the scene's own lights).
     pub fn light_set(&self, set: u32) -> impl Iterator<Item = &Light> {
         self.light_sets[set as usize]
@@ -147,6 +154,12 @@ pub struct Tracer<'w> {
     /// lighting until its reflected ray is traced: a stack, since those rays shade further
     /// surfaces above the entries of the surface that sent them.
     reflections: Vec<(DVec3, DVec3, f64)>,
+    /// The light each light source brings to the surface point being shaded, past the
+    /// shadows, found when a layer first needs it and kept for the point's other layers
+    /// and texture-map entries, as POV-Ray keeps it: one frame of an entry per light (by
+    /// its place in the world's lights) for each point, in a stack, since the rays one
+    /// layer sends shade further points before the next layer is lit.
+    arrivals: Vec<Option<DVec3>>,
     /// The last diffusion profile of a translucent surface.
     profiles: subsurface::ProfileCache,
 }
@@ -168,6 +181,7 @@ impl<'w> Tracer<'w> {
                 .as_ref()
                 .map(crate::radiosity::Walk::rendering),
             reflections: Vec::new(),
+            arrivals: Vec::new(),
             profiles: subsurface::ProfileCache::default(),
         }
     }
@@ -263,10 +277,19 @@ impl<'w> Tracer<'w> {
         if normal.dot(ray.direction) > 0.0 {
             normal = -normal;
         }
+        let arrivals = self.arrivals.len();
+        self.arrivals
+            .resize(arrivals + self.world.lights.len(), None);
         leaf.for_each_layers(&at, hit.part, &mut |w, layers, layers_at| {
-            let s = self.shade_layers(ray, &at, layers_at, normal, hit, layers, level, weight * w);
+            let stack = Stack {
+                layers,
+                at: layers_at,
+                arrivals,
+            };
+            let s = self.shade_layers(ray, &at, &stack, normal, hit, level, weight * w);
             total = total + s * w;
         });
+        self.arrivals.truncate(arrivals);
         total
     }
 
@@ -310,7 +333,7 @@ impl<'w> Tracer<'w> {
                 interior: &leaf.interior,
             };
             for light in world.lights_for(leaf) {
-                own += self.direct_light(light, &shading);
+                own += self.direct_light(light, &shading, None);
             }
             if let Some(photons) = &world.photons
                 && leaf.photons.collect()
@@ -340,13 +363,17 @@ impl<'w> Tracer<'w> {
         &mut self,
         ray: &Ray,
         at: &TexturePoint,
-        layers_at: &TexturePoint,
+        stack: &Stack<'_>,
         raw_normal: DVec3,
         hit: &Hit<'w>,
-        layers: &[Layer],
         level: u32,
         weight: f64,
     ) -> Sample {
+        let Stack {
+            layers,
+            at: layers_at,
+            arrivals,
+        } = *stack;
         let world = self.world;
         let leaf: &'w Leaf = hit.leaf;
         let p = at.world;
@@ -430,8 +457,8 @@ impl<'w> Tracer<'w> {
             // The pretrace wants only the radiosity samples a camera ray's path takes, and a
             // finish that shows no light (`ambient 1 diffuse 0`) needs no shadow rays.
             let unlit = self.vain_pretrace() || !shows_light(finish);
-            for light in world.lights_for(leaf).filter(|_| !unlit) {
-                own += self.direct_light(light, &shading);
+            for (number, light) in world.numbered_lights_for(leaf).filter(|_| !unlit) {
+                own += self.direct_light(light, &shading, Some(arrivals + number));
             }
             if let Some(profile) = profile.filter(|_| !unlit && finish.diffuse > 0.0) {
                 let under = self.subsurface_light(&profile, leaf, p, raw_normal);
@@ -502,7 +529,10 @@ impl<'w> Tracer<'w> {
     /// Diffuse light and highlights from one light source. A light behind the surface
     /// lights it only through `double_illuminate` (both sides alike) or the finish's
     /// backside diffuse (`diffuse front, back`, without highlights).
-    fn direct_light(&mut self, light: &Light, at: &Shading<'_>) -> DVec3 {
+    ///
+    /// `arrival`: the entry of [`Tracer::arrivals`] that keeps the light's arrival at the
+    /// point, where other layers there may need it too.
+    fn direct_light(&mut self, light: &Light, at: &Shading<'_>, arrival: Option<usize>) -> DVec3 {
         let Shading {
             p,
             normal,
@@ -517,10 +547,17 @@ impl<'w> Tracer<'w> {
         if facing(normal, incoming.direction, finish, double_illuminate).is_none() {
             return DVec3::ZERO;
         }
-        let light_colour = if light.arrives_whole {
-            incoming.colour
-        } else {
-            self.arriving(light, p, &incoming, interior)
+        let light_colour = match arrival {
+            _ if light.arrives_whole => incoming.colour,
+            Some(entry) => match self.arrivals[entry] {
+                Some(colour) => colour,
+                None => {
+                    let colour = self.arriving(light, p, &incoming, interior);
+                    self.arrivals[entry] = Some(colour);
+                    colour
+                }
+            },
+            None => self.arriving(light, p, &incoming, interior),
         };
         // Negative lights darken, as in POV-Ray: only a light too weak either way is skipped.
         if light_colour.abs().max_element() < 1e-10 {
@@ -901,6 +938,15 @@ impl<'w> Tracer<'w> {
         self.trace(&next, RayKind::Reflected, level + 1, weight)
             .colour
     }
+}
+
+/// One stack of texture layers that shows at a surface point: the layers, top first,
+/// where their patterns are evaluated, and the frame of [`Tracer::arrivals`] for the point.
+#[derive(Clone, Copy)]
+struct Stack<'a> {
+    layers: &'a [Layer],
+    at: &'a TexturePoint,
+    arrivals: usize,
 }
 
 /// A surface point as the lighting model sees it: where it is, its (perturbed) normal
