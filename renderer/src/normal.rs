@@ -145,9 +145,12 @@ fn mapped(pattern: &Pattern, map: &BlendMap<scene::Normal>, at: &TexturePoint, n
 /// warps (the geometric warps leave normals alone). A uv-mapped normal's `placement`
 /// (the object's transformations, which do not move its pattern) turns it too.
 fn into_pattern_space(pattern: &Pattern, placement: Option<&Transform>) -> DMat3 {
+    // The linear part of the pattern's transform, then the placement's, as
+    // `Transform::then` composes them, without the translations and inverses it finds too.
+    let linear = pattern.transform.matrix.matrix3;
     let mut m = match placement {
-        Some(placement) => pattern.transform.then(placement).matrix.matrix3,
-        None => pattern.transform.matrix.matrix3,
+        Some(p) => p.matrix.matrix3 * linear,
+        None => linear,
     }
     .transpose();
     for warp in pattern.warps.iter().rev() {
@@ -158,13 +161,14 @@ fn into_pattern_space(pattern: &Pattern, placement: Option<&Transform>) -> DMat3
     m
 }
 
-/// The way back from [`into_pattern_space`]. Without a placement the pattern's own
-/// matrices are read in place: the plugin copied the whole transformation for every
-/// perturbed normal.
+/// The way back from [`into_pattern_space`].
 fn out_of_pattern_space(pattern: &Pattern, placement: Option<&Transform>) -> DMat3 {
+    // The inverse of the pattern's transform then the placement, as `Transform::then`
+    // finds its linear part.
+    let linear = pattern.transform.inverse.matrix3;
     let mut m = match placement {
-        Some(placement) => pattern.transform.then(placement).inverse.matrix3,
-        None => pattern.transform.inverse.matrix3,
+        Some(p) => linear * p.inverse.matrix3,
+        None => linear,
     }
     .transpose();
     for warp in pattern.warps.iter().rev() {
@@ -267,7 +271,9 @@ fn pyramid(
     PYRAMID.iter().fold(DVec3::ZERO, |sum, corner| {
         let value = match pattern::evaluate_warped(pattern, warped + *corner * h, facing) {
             PatternValue::Blend(v) => v,
-            PatternValue::Block(i) => i as f64,
+            // Through `u32`, whose conversion is one instruction where `usize`'s is a
+            // dozen: a block pattern's index is small.
+            PatternValue::Block(i) => f64::from(i as u32),
         };
         let height = slope_map.map_or(value, |map| slope_profile(map, value));
         sum + *corner * height
