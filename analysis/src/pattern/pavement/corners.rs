@@ -183,13 +183,13 @@ pub(super) fn hexagon_distance(layout: &Layout, pavement: &Pavement, q: DVec2, r
         .unwrap_or(triangle[0]);
     let from_centre = q - lattice.position(centre);
     let steps = lattice.steps();
-    // The corner whose kite holds `q`: the direction from the centre nearest to q's.
+    // The corner whose kite holds `q`: the direction from the centre nearest to q's (the
+    // last of equals, as `max_by` keeps), each direction's projection found once.
+    let along: [f64; 6] = std::array::from_fn(|d| {
+        (lattice.position(steps[d]) - lattice.position((0, 0))).dot(from_centre)
+    });
     let kite = (0..6)
-        .max_by(|&a, &b| {
-            let along =
-                |d: usize| (lattice.position(steps[d]) - lattice.position((0, 0))).dot(from_centre);
-            along(a).total_cmp(&along(b))
-        })
+        .max_by(|&a, &b| along[a].total_cmp(&along[b]))
         .unwrap_or(0);
     let form = Look::new(pavement.form);
     let interior = Look::new(pavement.interior);
@@ -239,9 +239,11 @@ pub(super) fn triangle_distance(layout: &Layout, pavement: &Pavement, q: DVec2, 
         Look::new(pavement.exterior),
         Look::new(pavement.interior),
     );
-    // The corner whose kite holds `q`: the nearest.
+    // The corner whose kite holds `q`: the nearest (the first of equals, as `min_by`
+    // keeps), each distance found once.
+    let distances = places.map(|place| q.distance(place));
     let kite = (0..3)
-        .min_by(|&a, &b| q.distance(places[a]).total_cmp(&q.distance(places[b])))
+        .min_by(|&a, &b| distances[a].total_cmp(&distances[b]))
         .unwrap_or(0);
     let mut nearest = ramp;
     let first_in_period = layout.in_period(corners[0]);
