@@ -4,6 +4,7 @@
 use crate::options::Gamma;
 use glam::DVec3;
 use std::ops::{Add, Mul};
+use std::sync::OnceLock;
 
 /// What one ray brings back: the colour, premultiplied by coverage, and how much of the
 /// background's transparency shows through (1 for a transparent background, 0 for an opaque
@@ -113,6 +114,13 @@ pub struct EncodeTable {
 
 impl EncodeTable {
     const STEPS: usize = 8192;
+
+    /// The sRGB table, made once for the process: every render's output goes through it,
+    /// and its thousands of powers were a fixed cost of each render.
+    pub fn srgb() -> &'static EncodeTable {
+        static SRGB: OnceLock<EncodeTable> = OnceLock::new();
+        SRGB.get_or_init(|| EncodeTable::new(Curve::Srgb))
+    }
 
     pub fn new(curve: Curve) -> EncodeTable {
         let table = match curve {

@@ -276,7 +276,9 @@ fn method2(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
 /// 16-bit precision; exact for power curves, whose slope at black a table cannot follow.
 fn output_curve(curve: Curve) -> FileCurve {
     match curve {
-        Curve::Srgb => FileCurve::Table(EncodeTable::new(curve)),
+        // A copy of the process's table: a copy is a fraction of the powers that make it,
+        // and the output loop reads its own table faster than one behind a reference.
+        Curve::Srgb => FileCurve::Table(EncodeTable::srgb().clone()),
         other => FileCurve::Exact(other),
     }
 }
