@@ -407,7 +407,9 @@ impl Julia {
             let q = self.step(orbit[last]);
             last += 1;
             orbit[last] = q;
-            if !q.is_finite() || q.length_squared() > 1e100 {
+            // The squared norm alone tells an overflowing orbit: it is infinite or NaN.
+            let norm = q.length_squared();
+            if norm > 1e100 || norm.is_nan() {
                 break;
             }
         }
