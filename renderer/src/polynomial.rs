@@ -181,19 +181,23 @@ pub fn quartic_roots_in(coeffs: &[f64; 5], lo: f64, hi: f64) -> ([f64; 4], usize
 /// WebAssembly.
 #[inline(always)]
 pub fn cubic_roots_in(coeffs: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3], usize) {
+    let mut found = cubic_roots_unordered_in(coeffs, lo, hi);
+    found.0[..found.1].sort_by(f64::total_cmp);
+    found
+}
+
+/// [`cubic_roots_in`] in no particular order: for a caller that wants only the least
+/// root it keeps, so that it pays for no sort.
+#[inline(always)]
+pub fn cubic_roots_unordered_in(coeffs: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3], usize) {
     let mut found = ([0.0; 3], 0);
     let lead = coeffs[3];
-    let scale = coeffs
-        .iter()
-        .fold(0.0f64, |m, c| fast_math::max(m, c.abs()));
+    let scale = fast_math::max(
+        fast_math::max(coeffs[0].abs(), coeffs[1].abs()),
+        fast_math::max(coeffs[2].abs(), lead.abs()),
+    );
     if lead.abs() <= 1e-14 * scale || !scale.is_finite() || lead.is_nan() {
-        let mut searched = Vec::new();
-        roots_in(coeffs, lo, hi, &mut searched);
-        for x in searched.into_iter().take(3) {
-            found.0[found.1] = x;
-            found.1 += 1;
-        }
-        return found;
+        return searched_cubic_roots_in(coeffs, lo, hi);
     }
     let (xs, n) = cubic_roots(coeffs[2] / lead, coeffs[1] / lead, coeffs[0] / lead);
     for &x0 in &xs[..n] {
@@ -213,7 +217,20 @@ pub fn cubic_roots_in(coeffs: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3], usize) 
             found.1 += 1;
         }
     }
-    found.0[..found.1].sort_by(f64::total_cmp);
+    found
+}
+
+/// The roots of a cubic whose leading coefficient vanishes, by the general search: out of
+/// line, so that the closed form's callers set up no room for it.
+#[inline(never)]
+fn searched_cubic_roots_in(coeffs: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3], usize) {
+    let mut found = ([0.0; 3], 0);
+    let mut searched = Vec::new();
+    roots_in(coeffs, lo, hi, &mut searched);
+    for x in searched.into_iter().take(3) {
+        found.0[found.1] = x;
+        found.1 += 1;
+    }
     found
 }
 

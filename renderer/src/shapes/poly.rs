@@ -63,6 +63,15 @@ impl Dense {
     /// The polynomial's value at `p`.
     #[inline(always)]
     fn value<const ORDER: usize>(&self, p: DVec3) -> f64 {
+        if ORDER == 3 {
+            return self.cubic_value(p);
+        }
+        self.nested_value::<ORDER>(p)
+    }
+
+    /// [`Dense::value`] by the loops over the powers, for every order.
+    #[inline(always)]
+    fn nested_value<const ORDER: usize>(&self, p: DVec3) -> f64 {
         let c = &self.0;
         let mut at = 0;
         let mut sx = 0.0;
@@ -85,6 +94,49 @@ impl Dense {
     /// derivatives along.
     #[inline(always)]
     fn gradient<const ORDER: usize>(&self, p: DVec3) -> DVec3 {
+        if ORDER == 3 {
+            return self.cubic_gradient(p);
+        }
+        self.nested_gradient::<ORDER>(p)
+    }
+
+    /// A cubic's gradient at `p`: [`Dense::nested_gradient`] for order 3 written out, the
+    /// same bits (sums that start from 0 times a variable start from what is added to it).
+    #[inline(always)]
+    fn cubic_gradient(&self, p: DVec3) -> DVec3 {
+        let c = &self.0;
+        let (x, y, z) = (p.x, p.y, p.z);
+        // A group of coefficients of descending powers of z, by Horner's rule: its value
+        // and its derivative in z.
+        let chain3 = |a: f64, b: f64, e: f64| {
+            let s = a * z + b;
+            (s * z + e, a * z + s)
+        };
+        // Each power of x: its sum over y and z, and that sum's derivatives in y and z.
+        let sy2 = c[1] * y + (c[2] * z + c[3]);
+        let (s9, d9) = chain3(c[7], c[8], c[9]);
+        let a1 = c[4] * y + (c[5] * z + c[6]);
+        let (sy1, gy1, gz1) = (a1 * y + s9, c[4] * y + a1, c[5] * y + d9);
+        let (s15, d15) = chain3(c[13], c[14], c[15]);
+        // Of the terms without x only the derivatives are needed: the group of z alone
+        // (c[16] to c[19]) enters by its derivative in z.
+        let (s18, d18) = chain3(c[16], c[17], c[18]);
+        let d19 = d18 * z + s18;
+        let a0 = c[10] * y + (c[11] * z + c[12]);
+        let b0 = a0 * y + s15;
+        let (gy0, gz0) = ((c[10] * y + a0) * y + b0, (c[11] * y + d15) * y + d19);
+        let sx2 = c[0] * x + sy2;
+        let sx1 = sx2 * x + sy1;
+        DVec3::new(
+            (c[0] * x + sx2) * x + sx1,
+            (c[1] * x + gy1) * x + gy0,
+            (c[2] * x + gz1) * x + gz0,
+        )
+    }
+
+    /// [`Dense::gradient`] by the loops over the powers, for every order.
+    #[inline(always)]
+    fn nested_gradient<const ORDER: usize>(&self, p: DVec3) -> DVec3 {
         let c = &self.0;
         let mut at = 0;
         let (mut sx, mut gx) = (0.0, DVec3::ZERO);
@@ -106,10 +158,48 @@ impl Dense {
         gx
     }
 
+    /// A cubic's value at `p`: [`Dense::nested_value`] for order 3 written out, the same
+    /// operations in the same order (a group's sum starts from its first coefficient
+    /// instead of from 0 times the variable plus it, which is the same number), so the
+    /// same bits. The loops' zero starts, index arithmetic and bounds checks cost the
+    /// interpreted plugin about as much again as the 19 multiply-adds themselves.
+    #[inline(always)]
+    fn cubic_value(&self, p: DVec3) -> f64 {
+        let c = &self.0;
+        let (x, y, z) = (p.x, p.y, p.z);
+        let x2 = c[1] * y + (c[2] * z + c[3]);
+        let x1 = (c[4] * y + (c[5] * z + c[6])) * y + ((c[7] * z + c[8]) * z + c[9]);
+        let x0 = ((c[10] * y + (c[11] * z + c[12])) * y + ((c[13] * z + c[14]) * z + c[15])) * y
+            + (((c[16] * z + c[17]) * z + c[18]) * z + c[19]);
+        ((c[0] * x + x2) * x + x1) * x + x0
+    }
+
+    /// A cubic's terms of order 3 at `d`: [`Dense::nested_top`] for order 3 written out,
+    /// the same bits.
+    #[inline(always)]
+    fn cubic_top(&self, d: DVec3) -> f64 {
+        let c = &self.0;
+        let (z2, y) = (d.z * d.z, d.y);
+        let z3 = z2 * d.z;
+        let x2 = c[1] * y + c[2] * d.z;
+        let x1 = (c[4] * y + c[5] * d.z) * y + c[7] * z2;
+        let x0 = ((c[10] * y + c[11] * d.z) * y + c[13] * z2) * y + c[16] * z3;
+        ((c[0] * d.x + x2) * d.x + x1) * d.x + x0
+    }
+
     /// The terms of the highest order alone, at `d`: the leading coefficient along a ray
     /// of direction `d`.
     #[inline(always)]
     fn top<const ORDER: usize>(&self, d: DVec3) -> f64 {
+        if ORDER == 3 {
+            return self.cubic_top(d);
+        }
+        self.nested_top::<ORDER>(d)
+    }
+
+    /// [`Dense::top`] by the loops over the powers, for every order.
+    #[inline(always)]
+    fn nested_top<const ORDER: usize>(&self, d: DVec3) -> f64 {
         let c = &self.0;
         let mut zpow = [1.0; DENSE_ORDER + 1];
         for m in 1..=ORDER {
@@ -361,6 +451,9 @@ impl Poly {
 
     /// The nearest crossing in `(tmin, tmax)`.
     pub fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<f64> {
+        if let (3, false, Some(dense)) = (self.order, self.sturm, &self.dense) {
+            return self.first_cubic_hit(dense, ray, tmin, tmax);
+        }
         let mut found = [0.0; MAX_DEGREE];
         let n = self.roots(ray, &mut found);
         found[..n]
@@ -368,6 +461,29 @@ impl Poly {
             .copied()
             .filter(|&t| t > tmin && t < tmax)
             .min_by(f64::total_cmp)
+    }
+
+    /// [`Poly::first_hit`] of a `cubic` without `sturm`, the roots found as
+    /// [`Poly::roots`] finds them (the same numbers) but without a sort or a list of
+    /// every root: the least one kept is all a camera ray asks of the shape.
+    fn first_cubic_hit(&self, dense: &Dense, ray: &Ray, tmin: f64, tmax: f64) -> Option<f64> {
+        let (lo, hi, centre) = search_span(self.region.as_ref(), ray)?;
+        let half = (lo - centre).abs().max((hi - centre).abs());
+        if !(half > 0.0 && half.is_finite()) {
+            return None;
+        }
+        let o = ray.origin + ray.direction * centre;
+        let c = dense.along::<3>(o, ray.direction * half);
+        let (a, b) = ((lo - centre) / half, (hi - centre) / half);
+        let (r, k) = polynomial::cubic_roots_unordered_in(&[c[0], c[1], c[2], c[3]], a, b);
+        let mut best: Option<f64> = None;
+        for &x in &r[..k] {
+            let t = x * half + centre;
+            if t > tmin && t < tmax && best.is_none_or(|b| t < b) {
+                best = Some(t);
+            }
+        }
+        best
     }
 
     pub fn value(&self, p: DVec3) -> f64 {
@@ -527,6 +643,76 @@ mod tests {
                 "{want}"
             );
         }
+    }
+
+    /// Every cubic term, with unequal coefficients.
+    fn full_cubic() -> Poly {
+        let mut terms = Vec::new();
+        for i in 0..=3u8 {
+            for j in 0..=3 - i {
+                for k in 0..=3 - i - j {
+                    let c = 1.3 - f64::from(i * 5 + j * 3 + k) * 0.41 + f64::from(i * k);
+                    terms.push(([i, j, k], c));
+                }
+            }
+        }
+        Poly::new(
+            3,
+            terms,
+            false,
+            Some(Aabb::new(DVec3::splat(-2.0), DVec3::splat(2.0))),
+        )
+    }
+
+    #[test]
+    fn the_written_out_cubic_gives_the_loops_bits() {
+        let poly = full_cubic();
+        let dense = poly.dense.as_ref().expect("dense coefficients");
+        for p in [
+            DVec3::new(0.3, -1.2, 0.7),
+            DVec3::new(-1.7, 0.05, 1.9),
+            DVec3::new(1e-3, 2.5e2, -3.0),
+            DVec3::ZERO,
+        ] {
+            assert_eq!(
+                dense.cubic_value(p).to_bits(),
+                dense.nested_value::<3>(p).to_bits()
+            );
+            assert_eq!(
+                dense.cubic_top(p).to_bits(),
+                dense.nested_top::<3>(p).to_bits()
+            );
+            let (got, want) = (dense.cubic_gradient(p), dense.nested_gradient::<3>(p));
+            assert_eq!(
+                got.to_array().map(f64::to_bits),
+                want.to_array().map(f64::to_bits)
+            );
+        }
+    }
+
+    #[test]
+    fn a_cubics_first_hit_is_its_least_root_inside_the_interval() {
+        let poly = full_cubic();
+        let mut hits = 0;
+        for (origin, direction) in [
+            (DVec3::new(-3.0, 0.2, 0.1), DVec3::new(1.0, 0.1, -0.05)),
+            (DVec3::new(0.5, 3.0, -0.4), DVec3::new(-0.2, -1.0, 0.3)),
+            (DVec3::new(0.1, 0.1, 0.1), DVec3::new(0.3, 0.4, 1.0)),
+        ] {
+            let ray = Ray::new(origin, direction);
+            let mut found = [0.0; MAX_DEGREE];
+            let n = poly.roots(&ray, &mut found);
+            for (tmin, tmax) in [(0.0, f64::INFINITY), (1e-6, 2.0), (1.0, 4.0)] {
+                let want = found[..n]
+                    .iter()
+                    .copied()
+                    .filter(|&t| t > tmin && t < tmax)
+                    .min_by(f64::total_cmp);
+                assert_eq!(poly.first_hit(&ray, tmin, tmax), want, "{origin} {tmin}");
+                hits += usize::from(want.is_some());
+            }
+        }
+        assert!(hits >= 4, "{hits}");
     }
 
     #[test]
