@@ -7,6 +7,7 @@
 
 use crate::bounds::Aabb;
 use crate::csg_spans::{ChildSpans, Meeting};
+use crate::fast_math;
 use crate::interior::Interior;
 use crate::material::{Layer, Material, transmitted_through};
 use crate::photons::SurfacePhotons;
@@ -656,8 +657,8 @@ impl Object {
                             // Inside every other child is inside their meeting: the
                             // child's own nearest crossing there is the one kept.
                             let mut within = q;
-                            within.tmin = within.tmin.max(m.lo);
-                            within.tmax = within.tmax.min(m.hi);
+                            within.tmin = fast_math::max(within.tmin, m.lo);
+                            within.tmax = fast_math::min(within.tmax, m.hi);
                             child.nearest(&within, scratch)
                         }
                         _ => {

@@ -181,15 +181,6 @@ pub fn quartic_roots_in(coeffs: &[f64; 5], lo: f64, hi: f64) -> ([f64; 4], usize
 /// WebAssembly.
 #[inline(always)]
 pub fn cubic_roots_in(coeffs: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3], usize) {
-    let mut found = cubic_roots_unordered_in(coeffs, lo, hi);
-    found.0[..found.1].sort_by(f64::total_cmp);
-    found
-}
-
-/// [`cubic_roots_in`] in no particular order: for a caller that wants only the least
-/// root it keeps, so that it pays for no sort.
-#[inline(always)]
-pub fn cubic_roots_unordered_in(coeffs: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3], usize) {
     let mut found = ([0.0; 3], 0);
     let lead = coeffs[3];
     let scale = fast_math::max(
@@ -201,23 +192,82 @@ pub fn cubic_roots_unordered_in(coeffs: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3
     }
     let (xs, n) = cubic_roots(coeffs[2] / lead, coeffs[1] / lead, coeffs[0] / lead);
     for &x0 in &xs[..n] {
-        let mut x = x0;
-        for _ in 0..2 {
-            let f = ((coeffs[3] * x + coeffs[2]) * x + coeffs[1]) * x + coeffs[0];
-            let df = (3.0 * coeffs[3] * x + 2.0 * coeffs[2]) * x + coeffs[1];
-            if df != 0.0 {
-                let next = x - f / df;
-                if next.is_finite() {
-                    x = next;
-                }
-            }
-        }
+        let x = polish_cubic_root(coeffs, x0);
         if x >= lo && x <= hi && x.is_finite() {
             found.0[found.1] = x;
             found.1 += 1;
         }
     }
+    found.0[..found.1].sort_by(f64::total_cmp);
     found
+}
+
+/// How far, relative to the coefficients' unit of the variable, two Newton steps may move
+/// a root of the closed form: its error is a few ulps at a simple root, about the square
+/// root of that at a double one and the cube root at a triple one.
+const POLISH_REACH: f64 = 1e-4;
+
+/// The least root of the cubic `coeffs` (lowest degree first) that `keep` accepts, where
+/// `keep` accepts nothing outside `near` (widened by [`POLISH_REACH`]): the least of
+/// those [`cubic_roots_in`] gives over that interval that `keep` accepts. The
+/// closed form's roots are polished least first, only while one may still be the
+/// answer, so that a ray asking for its nearest crossing pays for one root's Newton
+/// steps instead of three.
+#[inline(always)]
+pub fn least_cubic_root(
+    coeffs: &[f64; 4],
+    near: (f64, f64),
+    keep: impl Fn(f64) -> bool,
+) -> Option<f64> {
+    let lead = coeffs[3];
+    let scale = fast_math::max(
+        fast_math::max(coeffs[0].abs(), coeffs[1].abs()),
+        fast_math::max(coeffs[2].abs(), lead.abs()),
+    );
+    let (lo, hi) = (near.0 - POLISH_REACH, near.1 + POLISH_REACH);
+    if lead.abs() <= 1e-14 * scale || !scale.is_finite() || lead.is_nan() {
+        let (r, n) = searched_cubic_roots_in(coeffs, lo, hi);
+        return r[..n].iter().copied().find(|&x| keep(x));
+    }
+    let (mut xs, n) = cubic_roots(coeffs[2] / lead, coeffs[1] / lead, coeffs[0] / lead);
+    if n == 3 {
+        for (i, j) in [(0, 1), (1, 2), (0, 1)] {
+            if xs[j] < xs[i] {
+                xs.swap(i, j);
+            }
+        }
+    }
+    let mut best: Option<f64> = None;
+    for &x0 in &xs[..n] {
+        if best.is_some_and(|b| x0 > b + POLISH_REACH) || x0 > hi {
+            break;
+        }
+        if x0 < lo {
+            continue;
+        }
+        let x = polish_cubic_root(coeffs, x0);
+        if x.is_finite() && keep(x) && best.is_none_or(|b| x < b) {
+            best = Some(x);
+        }
+    }
+    best
+}
+
+/// A root of the cubic's closed form after two Newton steps on the cubic itself.
+#[inline(always)]
+fn polish_cubic_root(coeffs: &[f64; 4], x0: f64) -> f64 {
+    let mut x = x0;
+    for _ in 0..2 {
+        let f = ((coeffs[3] * x + coeffs[2]) * x + coeffs[1]) * x + coeffs[0];
+        let df = (3.0 * coeffs[3] * x + 2.0 * coeffs[2]) * x + coeffs[1];
+        if df != 0.0 {
+            let next = x - f / df;
+            if next.is_finite() {
+                x = next;
+            }
+        }
+    }
+    x
 }
 
 /// The roots of a cubic whose leading coefficient vanishes, by the general search: out of
@@ -235,6 +285,8 @@ fn searched_cubic_roots_in(coeffs: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3], us
 }
 
 /// The real roots of the monic cubic x³ + a x² + b x + c and how many there are (1 or 3).
+/// Inlined, so that they stay in locals instead of going through memory.
+#[inline(always)]
 fn cubic_roots(a: f64, b: f64, c: f64) -> ([f64; 3], usize) {
     let q = (a * a - 3.0 * b) / 9.0;
     let r = (2.0 * a * a * a - 9.0 * a * b + 27.0 * c) / 54.0;
@@ -453,6 +505,26 @@ mod tests {
             );
             for (a, b) in closed.iter().zip(&searched) {
                 assert!((a - b).abs() < 1e-9, "{coeffs:?}: {closed:?} {searched:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_least_cubic_root_kept_is_the_least_of_all_kept() {
+        // Three simple roots, a double and a simple one, a triple one, one real root.
+        for coeffs in [
+            [6.0, -11.0, 6.0, -1.0],
+            [0.5, 0.0, -1.5, 1.0],
+            [-1.0, 3.0, -3.0, 1.0],
+            [1.0, 1.0, 1.0, 1.0],
+            [0.3, -0.2, -0.9, 0.35],
+        ] {
+            let (all, n) = cubic_roots_in(&coeffs, -10.0, 10.0);
+            for above in [-10.0, -0.5, 0.99, 1.5, 2.5, 9.0] {
+                let keep = |x: f64| x > above && x < 5.0;
+                let want = all[..n].iter().copied().find(|&x| keep(x));
+                let got = least_cubic_root(&coeffs, (above, 5.0), keep);
+                assert_eq!(got, want, "{coeffs:?} above {above}");
             }
         }
     }

@@ -5,6 +5,7 @@
 
 use super::Roots;
 use crate::bounds::Aabb;
+use crate::fast_math;
 use crate::polynomial::{self, MAX_DEGREE};
 use crate::ray::Ray;
 use crate::sturm;
@@ -468,22 +469,24 @@ impl Poly {
     /// every root: the least one kept is all a camera ray asks of the shape.
     fn first_cubic_hit(&self, dense: &Dense, ray: &Ray, tmin: f64, tmax: f64) -> Option<f64> {
         let (lo, hi, centre) = search_span(self.region.as_ref(), ray)?;
-        let half = (lo - centre).abs().max((hi - centre).abs());
+        let half = fast_math::max((lo - centre).abs(), (hi - centre).abs());
         if !(half > 0.0 && half.is_finite()) {
             return None;
         }
         let o = ray.origin + ray.direction * centre;
         let c = dense.along::<3>(o, ray.direction * half);
         let (a, b) = ((lo - centre) / half, (hi - centre) / half);
-        let (r, k) = polynomial::cubic_roots_unordered_in(&[c[0], c[1], c[2], c[3]], a, b);
-        let mut best: Option<f64> = None;
-        for &x in &r[..k] {
+        // Where the query's interval lies in the polynomial's variable: only roots there
+        // need polishing.
+        let near = (
+            fast_math::max(a, (tmin - centre) / half),
+            fast_math::min(b, (tmax - centre) / half),
+        );
+        let x = polynomial::least_cubic_root(&[c[0], c[1], c[2], c[3]], near, |x| {
             let t = x * half + centre;
-            if t > tmin && t < tmax && best.is_none_or(|b| t < b) {
-                best = Some(t);
-            }
-        }
-        best
+            x >= a && x <= b && t > tmin && t < tmax
+        })?;
+        Some(x * half + centre)
     }
 
     pub fn value(&self, p: DVec3) -> f64 {
