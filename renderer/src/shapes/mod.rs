@@ -244,7 +244,11 @@ impl Shape {
             Shape::Triangle(s) => s.normal(p),
             Shape::Mesh(s) => s.normal(p, part),
             Shape::Polygon(_) => DVec3::Z,
-            Shape::Math(s) => s.normal(p, part),
+            // A polynomial's gradient straight from here, as its test is.
+            Shape::Math(s) => match &**s {
+                MathShape::Poly(poly) => poly.normal(p),
+                s => s.normal(p, part),
+            },
         }
     }
 
