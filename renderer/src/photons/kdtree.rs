@@ -153,7 +153,9 @@ pub fn nearest_among(
 /// the squared distance of the farthest photon kept when it keeps `k`), tried within
 /// `hint` first when that is nearer: when the hint holds `k` photons they are the nearest,
 /// found without taking in and throwing out the farther ones. Returns the squared
-/// distance of the farthest photon kept when `k` were found, else `max_d2`.
+/// distance of the farthest photon kept when `k` were found, else `max_d2`. Both tries
+/// go through one call of `search`, so that it is inlined here rather than kept out of
+/// line as a closure called from two places, a call per gathering in the plugin.
 #[inline(always)]
 fn hinted(
     k: usize,
@@ -162,14 +164,19 @@ fn hinted(
     found: &mut Vec<Found>,
     mut search: impl FnMut(f32, &mut Vec<Found>) -> f32,
 ) -> f32 {
-    if let Some(hint) = hint.filter(|h| *h < max_d2) {
-        let d2 = search(hint, found);
+    let hint = hint.filter(|h| *h < max_d2);
+    let mut limit = hint.unwrap_or(max_d2);
+    let mut widest = hint.is_none();
+    loop {
+        let d2 = search(limit, found);
         if found.len() == k {
             return d2;
         }
+        if widest {
+            return max_d2;
+        }
+        (limit, widest) = (max_d2, true);
     }
-    let d2 = search(max_d2, found);
-    if found.len() == k { d2 } else { max_d2 }
 }
 
 /// The nearest photons found so far: gathered as they come until there are `k`, then a
@@ -225,7 +232,9 @@ impl<'a> Best<'a> {
     }
 }
 
-/// Restores the max-heap order below `i`.
+/// Restores the max-heap order below `i`. Inlined into the searches: a gathering keeps
+/// a dozen photons, each a call the interpreted plugin sets up a frame for.
+#[inline(always)]
 fn sift_down(heap: &mut [Found], mut i: usize) {
     loop {
         let (left, right) = (2 * i + 1, 2 * i + 2);
