@@ -143,6 +143,11 @@ pub struct Tracer<'w> {
     /// light: neighbouring shadow rays are usually stopped by it too, and one shape test
     /// is cheaper than the search.
     last_blocker: Option<&'w Leaf>,
+    /// The interior of the object whose surface the current shadow rays leave (null
+    /// otherwise), compared by address only: [`Self::last_blocker`] is not tried again
+    /// when it is that object, which shadows its own points rarely if at all (a disc or
+    /// plane never) while its neighbours' shadow rays keep meeting it.
+    shadow_surface: *const Interior,
     /// The shadow samples of an area light's grid for the current point, kept between
     /// points to spare an allocation each time.
     area_samples: Vec<Option<DVec3>>,
@@ -174,6 +179,7 @@ impl<'w> Tracer<'w> {
             photon_lights: Vec::new(),
             gather_scratch: GatherScratch::default(),
             last_blocker: None,
+            shadow_surface: std::ptr::null(),
             area_samples: Vec::new(),
             shadow_start: Vec::new(),
             radiosity: world
@@ -599,7 +605,9 @@ impl<'w> Tracer<'w> {
                         .filter(|i| !i.media.is_empty() && !std::ptr::eq(**i, surface)),
                 );
             }
+            self.shadow_surface = surface;
             let colour = self.unshadowed(light, p, incoming);
+            self.shadow_surface = std::ptr::null();
             self.shadow_start.clear();
             colour
         } else if self
@@ -807,6 +815,7 @@ impl<'w> Tracer<'w> {
         };
         let mut q = segment(self, origin, remaining);
         if let Some(blocker) = self.last_blocker
+            && !std::ptr::eq(&*blocker.interior, self.shadow_surface)
             && blocker.blocks(&q, photons_stop)
         {
             return DVec3::ZERO;
