@@ -52,11 +52,15 @@ impl Image {
 
 /// A sample in 0..=1 (clipped) to the nearest of 256 levels, halves rounded up. Written
 /// out rather than with `f32::round`, which is a call to libm in WebAssembly, made for
-/// every sample of every image the plugin returns; `x - trunc(x)` is exact.
+/// every sample of every image the plugin returns. `x + 0.5` in f64 is exact for every
+/// `x` of at least 2^-22 (24 significant bits, none below 2^-45, and the sum below 2^9);
+/// smaller ones stay below 1 however the sum rounds. So its truncation is `x` rounded,
+/// and a NaN truncates to 0 as before. Truncated to `u32` and then to `u8` rather than
+/// straight to `u8`: the value is known to be at most 255, and the saturating conversion
+/// to `u8` costs two more comparisons per sample.
 fn quantise8(value: f32) -> u8 {
     let x = value.clamp(0.0, 1.0) * 255.0;
-    let whole = x.trunc();
-    (if x - whole >= 0.5 { whole + 1.0 } else { whole }) as u8
+    (f64::from(x) + 0.5) as u32 as u8
 }
 
 #[cfg(test)]
@@ -71,7 +75,27 @@ mod tests {
             assert_eq!(quantise8(value), expected, "{value}");
             value += 1.0 / 65536.0;
         }
-        for value in [0.5 / 255.0, 1.5 / 255.0, 0.499_999_97 / 255.0, f32::NAN] {
+        // Around every halfway point between levels, a few ulps either side.
+        for level in 0..255 {
+            let mut value = (level as f32 + 0.5) / 255.0;
+            for _ in 0..4 {
+                value = f32::from_bits(value.to_bits() - 1);
+            }
+            for _ in 0..9 {
+                let expected = (value.clamp(0.0, 1.0) * 255.0).round() as u8;
+                assert_eq!(quantise8(value), expected, "{value}");
+                value = f32::from_bits(value.to_bits() + 1);
+            }
+        }
+        for value in [
+            0.5 / 255.0,
+            1.5 / 255.0,
+            0.499_999_97 / 255.0,
+            1e-30,
+            f32::MIN_POSITIVE,
+            -0.0,
+            f32::NAN,
+        ] {
             let expected = (value.clamp(0.0, 1.0) * 255.0).round() as u8;
             assert_eq!(quantise8(value), expected, "{value}");
         }
