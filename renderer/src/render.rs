@@ -94,9 +94,13 @@ pub fn render_with_warnings(
         alpha: options.output_alpha,
     };
     let mut image = Image::new(width, height, options.output_alpha);
-    for (row, y) in samples.iter().zip(region.y0..=region.y1) {
-        for (s, x) in row.iter().zip(region.x0..=region.x1) {
-            image.set_pixel(x, y, output.pixel(*s));
+    // Written through the rows of the image rather than pixel by pixel, which computed
+    // and checked an index for every pixel.
+    let lines = image.pixels.chunks_exact_mut(width as usize);
+    for (row, line) in samples.iter().zip(lines.skip(region.y0 as usize)) {
+        let line = &mut line[region.x0 as usize..=region.x1 as usize];
+        for (s, out) in row.iter().zip(line) {
+            *out = output.pixel(*s);
         }
     }
     let warnings = world
