@@ -1,8 +1,10 @@
 //! Times our render of every fidelity scene (evaluation plus tracing, without PNG encoding;
 //! the best of three runs) on one thread and on all threads, beside POV-Ray's own parse plus
 //! trace time at `+WT1`, and prints the table. Single-thread figures are CPU time of the
-//! process (Linux's per-thread scheduler statistics), as POV-Ray's are CPU seconds: the
-//! machine is shared, and wall time would measure the neighbours. All-thread figures are
+//! process (the process CPU-time clock, `clock_gettime(CLOCK_PROCESS_CPUTIME_ID)`, precise
+//! to the nanosecond, where the scheduler statistics in `/proc` advance only at scheduler
+//! ticks), as POV-Ray's are CPU seconds: the machine is shared, and wall time would measure
+//! the neighbours. All-thread figures are
 //! wall time, POV-Ray's as it reports its phases' elapsed seconds.
 //!
 //!   cargo run --release -p tests --bin fidelity-benchmark [--live-povray] [--wasm]
