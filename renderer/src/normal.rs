@@ -268,16 +268,20 @@ fn pyramid(
     h: f64,
     facing: Option<&Facing>,
 ) -> DVec3 {
-    PYRAMID.iter().fold(DVec3::ZERO, |sum, corner| {
-        let value = match pattern::evaluate_warped(pattern, warped + *corner * h, facing) {
-            PatternValue::Blend(v) => v,
-            // Through `u32`, whose conversion is one instruction where `usize`'s is a
-            // dozen: a block pattern's index is small.
-            PatternValue::Block(i) => f64::from(i as u32),
-        };
-        let height = slope_map.map_or(value, |map| slope_profile(map, value));
-        sum + *corner * height
-    })
+    let values = pattern::evaluate_warped_each(pattern, PYRAMID.map(|c| warped + c * h), facing);
+    PYRAMID
+        .iter()
+        .zip(values)
+        .fold(DVec3::ZERO, |sum, (corner, value)| {
+            let value = match value {
+                PatternValue::Blend(v) => v,
+                // Through `u32`, whose conversion is one instruction where `usize`'s is a
+                // dozen: a block pattern's index is small.
+                PatternValue::Block(i) => f64::from(i as u32),
+            };
+            let height = slope_map.map_or(value, |map| slope_profile(map, value));
+            sum + *corner * height
+        })
 }
 
 /// A value through a `slope_map`: the Hermite cubic between the entries either side, each
