@@ -6,6 +6,7 @@
 pub mod db;
 pub mod eval;
 pub mod files;
+mod floor;
 pub mod font;
 pub mod format;
 pub mod function;

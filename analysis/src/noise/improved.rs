@@ -6,7 +6,8 @@
 //! [`improved_tables`](super::improved_tables).
 
 use super::improved_tables::{COLUMN_SHIFT, GRADIENTS, ROW_SHIFT};
-use super::{lattice_floor, s_curve};
+use super::s_curve;
+use crate::floor::floor;
 use glam::DVec3;
 
 /// Where the lattice sits: its points are where the coordinates plus this are integers
@@ -29,7 +30,7 @@ fn gradient(x: i64, y: i64, z: i64) -> DVec3 {
 pub(super) fn unclipped(p: DVec3) -> f64 {
     // The tables count the lattice points from the one below (0, 0, 0).
     let q = p + DVec3::splat(LATTICE_SHIFT - 1.0);
-    let f = DVec3::new(lattice_floor(q.x), lattice_floor(q.y), lattice_floor(q.z));
+    let f = DVec3::new(floor(q.x), floor(q.y), floor(q.z));
     let t = q - f;
     let (x, y, z) = (f.x as i64, f.y as i64, f.z as i64);
     let s = DVec3::new(s_curve(t.x), s_curve(t.y), s_curve(t.z));

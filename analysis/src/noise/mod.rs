@@ -11,6 +11,7 @@ mod improved;
 mod improved_tables;
 mod tables;
 
+use crate::floor::floor;
 use glam::DVec3;
 use std::ops::{Add, Mul, Sub};
 use tables::{COEFFICIENTS, HASH};
@@ -72,28 +73,13 @@ const fn vector_corners() -> [[DVec3; 4]; 256] {
     table
 }
 
-/// `x.floor()` without a call into the maths library (x86-64's baseline has no rounding
-/// instruction): truncation corrected downwards. Beyond 2^52 every float is an integer.
-/// WebAssembly has the instruction itself.
-fn lattice_floor(x: f64) -> f64 {
-    if cfg!(target_arch = "wasm32") {
-        x.floor()
-    } else if x.abs() < 4.0e15 {
-        let t = x as i64 as f64;
-        if t > x { t - 1.0 } else { t }
-    } else {
-        x.floor()
-    }
-}
-
 /// POV-Ray's hash of an integer cube, 0..4096: the lattice hash applied to each coordinate
 /// (taken modulo 4096) in turn, x first, each result xor the next. The cell patterns
 /// (cells, crackle) number their cubes by it, without the noise's lattice offset.
 pub fn cube_hash(x: i64, y: i64, z: i64) -> usize {
-    let at = |c: i64| (c & 4095) as usize;
-    let hx = usize::from(HASH[at(x)]);
-    let hxy = usize::from(HASH[(hx ^ at(y)) & 4095]);
-    usize::from(HASH[(hxy ^ at(z)) & 4095])
+    let hx = usize::from(HASH[lattice(x, 0)]);
+    let hxy = usize::from(HASH[(hx ^ lattice(y, 0)) & 4095]);
+    usize::from(HASH[(hxy ^ lattice(z, 0)) & 4095])
 }
 
 fn s_curve(t: f64) -> f64 {
@@ -124,7 +110,7 @@ where
     T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T>,
 {
     let q = p + DVec3::splat(LATTICE_OFFSET);
-    let f = DVec3::new(lattice_floor(q.x), lattice_floor(q.y), lattice_floor(q.z));
+    let f = DVec3::new(floor(q.x), floor(q.y), floor(q.z));
     let cell = Cell {
         x: f.x as i64,
         y: f.y as i64,
