@@ -387,6 +387,15 @@ pub struct Csg {
     /// holding all of the node's surface: a ray that passes it by misses the node, whose
     /// other children then need no test (a `cubic` clipped by a sphere inside its box).
     hull: Option<usize>,
+    /// A clip whose clipping objects are all uninverted spheres, boxes or planes, and whose
+    /// clipped object is none of them (a `cubic` clipped by a sphere): its nearest crossing
+    /// is the clipped object's own nearest one where the clipping stretches meet (see
+    /// [`Csg::nearest_clipped`]).
+    pub convex_clip: bool,
+    /// Whether a ray that crosses the hull may still pass the node's bounds by: not when
+    /// the hull's own box is the bounds (a clipping sphere inside the clipped object's
+    /// box), so that such a clip tests no box.
+    box_culls: bool,
 }
 
 /// The CSG operations a runtime node performs.
@@ -455,14 +464,28 @@ impl Csg {
                 .map(|i| i + first_bound),
             CsgKind::Union | CsgKind::Merge => None,
         };
+        let convex_clip = kind == CsgKind::Clip
+            && children.split_first().is_some_and(|(clipped, clips)| {
+                !spans_always(clipped) && clips.iter().all(spans_always)
+            });
+        let box_culls = hull.is_none_or(|h| children[h].bounds() != bounds);
         Csg {
             kind,
             children,
             bounds,
             region,
             hull,
+            convex_clip,
+            box_culls,
         }
     }
+}
+
+/// Whether the object is an uninverted leaf whose stretch along every ray
+/// [`Shape::convex_span`] gives: a sphere, a box or a plane's half-space.
+fn spans_always(object: &Object) -> bool {
+    matches!(object, Object::Leaf(l) if !l.inverse
+        && matches!(l.shape, Shape::Sphere(_) | Shape::Cuboid(_) | Shape::Plane(_)))
 }
 
 /// The box around the inside of an intersection (or a clip) whose parts are all leaves
@@ -603,6 +626,11 @@ impl Object {
 
     /// The nearest crossing inside the query's interval.
     pub fn nearest<'a>(&'a self, q: &Query, scratch: &mut Vec<Hit<'a>>) -> Option<Hit<'a>> {
+        if let Object::Csg(csg) = self
+            && csg.convex_clip
+        {
+            return csg.nearest_clipped(q, scratch);
+        }
         // A leaf's own test costs about what its box test would; CSG nodes check their box.
         if let Object::Csg(csg) = self
             && csg.bounds.is_finite()
@@ -752,6 +780,37 @@ impl Object {
 }
 
 impl Csg {
+    /// [`Object::nearest`] of a clip by uninverted spheres, boxes and planes
+    /// ([`Csg::convex_clip`]): the clipped object's nearest crossing strictly inside every
+    /// clipping stretch, the one the general search keeps as the meeting's sole other
+    /// child, without its record of each child's stretch, its entry and its loop over the
+    /// children. Out of line, with a frame smaller than the general search's.
+    #[inline(never)]
+    pub fn nearest_clipped<'a>(&'a self, q: &Query, scratch: &mut Vec<Hit<'a>>) -> Option<Hit<'a>> {
+        let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+        // The hull first, so that a ray passing it by costs no other test, then the box
+        // (which a ray crossing the hull mostly crosses too) and the other clipping leaves.
+        let hull = self.hull.unwrap_or(0);
+        if hull > 0 {
+            narrow_to_stretch(&self.children[hull], q, &mut lo, &mut hi)?;
+        }
+        if self.box_culls && self.bounds.is_finite() {
+            q_clip(self.bounds, q)?;
+        }
+        for (i, clip) in self.children.iter().enumerate().skip(1) {
+            if i != hull {
+                narrow_to_stretch(clip, q, &mut lo, &mut hi)?;
+            }
+        }
+        let mut within = *q;
+        within.tmin = fast_math::max(within.tmin, lo);
+        within.tmax = fast_math::min(within.tmax, hi);
+        match &self.children[0] {
+            Object::Leaf(leaf) => leaf.nearest(&within),
+            csg => csg.nearest(&within, scratch),
+        }
+    }
+
     /// Whether crossings of child `from` and those after it can be on this CSG's surface:
     /// not those of the objects that clip another.
     fn may_keep(&self, from: usize) -> bool {
@@ -814,6 +873,25 @@ impl Csg {
         (0..self.children.len())
             .all(|j| j == from || spans.inside(&self.children, j, t, ray) == inside)
     }
+}
+
+/// Narrows `[lo, hi]` to the stretch of the query's ray inside `clip`, an uninverted sphere,
+/// box or plane (see [`Csg::convex_clip`]); `None` once no point of the query's interval is
+/// left in it, as [`ChildSpans::meet`] decides.
+#[inline(always)]
+fn narrow_to_stretch(clip: &Object, q: &Query, lo: &mut f64, hi: &mut f64) -> Option<()> {
+    // Always a leaf with a stretch, empty when the ray passes it by.
+    let Object::Leaf(leaf) = clip else {
+        return Some(());
+    };
+    let span = leaf.span(&q.ray)?;
+    if span.enter.t > *lo {
+        *lo = span.enter.t;
+    }
+    if span.exit.t < *hi {
+        *hi = span.exit.t;
+    }
+    (!(*lo > *hi || *lo >= q.tmax || *hi <= q.tmin)).then_some(())
 }
 
 fn q_clip(bounds: Aabb, q: &Query) -> Option<(f64, f64)> {
@@ -937,6 +1015,31 @@ mod tests {
         );
     }
 
+    /// A clip by uninverted spheres, boxes and planes of an object that is none of them
+    /// takes the clip's own search, which tests no box when the clipping sphere's box is
+    /// the node's.
+    #[test]
+    fn clips_by_convex_leaves_are_searched_by_their_stretches() {
+        let clip = |source: &str| {
+            let world = crate::build::world_of_source(source);
+            match world.bvh.objects().next() {
+                Some(Object::Csg(csg)) => (csg.convex_clip, csg.box_culls),
+                _ => panic!("not a CSG node"),
+            }
+        };
+        assert_eq!(
+            clip("torus { 1, 0.5 clipped_by { sphere { x, 0.45 } } }"),
+            (true, false)
+        );
+        assert_eq!(
+            clip("torus { 1, 0.5 clipped_by { sphere { x, 0.8 } plane { y, 0 } } }"),
+            (true, true)
+        );
+        assert!(!clip("box { -1, 1 clipped_by { sphere { 0, 1.2 } } }").0);
+        assert!(!clip("torus { 1, 0.5 clipped_by { plane { y, 0 inverse } } }").0);
+        assert!(!clip("torus { 1, 0.5 clipped_by { cylinder { -y, y, 1 } } }").0);
+    }
+
     /// Every crossing of the object's surface along the ray, found the plain way: each
     /// leaf's crossings, kept where point tests put them inside (or, for a merge, outside)
     /// the other children.
@@ -988,6 +1091,9 @@ mod tests {
             "intersection { torus { 1, 0.4 } sphere { <1, 0, 0>, 0.6 } rotate 20*x }",
             "difference { sphere { 0, 1 } merge { box { -0.3, 2 } sphere { -x, 0.5 } }
                           cylinder { -2*z, 2*z, 0.2 open } }",
+            "torus { 1, 0.5 clipped_by { sphere { x, 0.45 } } rotate 20*x }",
+            "torus { 1, 0.4 clipped_by { sphere { <0.6, 0, 0>, 0.9 } plane { y, 0.25 }
+                                         box { -2, <2, 2, 0.5> } } }",
         ];
         let mut compared = 0;
         for source in scenes {

@@ -191,11 +191,13 @@ impl Bvh {
 }
 
 /// [`Object::nearest`], with a leaf, most objects, tested here without a call: the call's
-/// frame, sized for CSG nodes, costs the interpreted plugin more than a leaf's own test.
+/// frame, sized for CSG nodes, costs the interpreted plugin more than a leaf's own test. A
+/// clip by convex shapes goes to its own search directly, for the same reason.
 #[inline(always)]
 fn nearest_of<'a>(object: &'a Object, q: &Query, scratch: &mut Vec<Hit<'a>>) -> Option<Hit<'a>> {
     match object {
         Object::Leaf(leaf) => leaf.nearest(q),
+        Object::Csg(csg) if csg.convex_clip => csg.nearest_clipped(q, scratch),
         csg => csg.nearest(q, scratch),
     }
 }
