@@ -884,12 +884,20 @@ fn narrow_to_stretch(clip: &Object, q: &Query, lo: &mut f64, hi: &mut f64) -> Op
     let Object::Leaf(leaf) = clip else {
         return Some(());
     };
-    let span = leaf.span(&q.ray)?;
-    if span.enter.t > *lo {
-        *lo = span.enter.t;
+    let (enter, exit) = match &leaf.shape {
+        // A sphere, the usual clip, is asked here: the general stretch is a call and comes
+        // back through memory. A ray passing it by meets nothing of the clip.
+        Shape::Sphere(sphere) => sphere.span(&leaf.local_ray(&q.ray))?,
+        _ => {
+            let span = leaf.span(&q.ray)?;
+            (span.enter.t, span.exit.t)
+        }
+    };
+    if enter > *lo {
+        *lo = enter;
     }
-    if span.exit.t < *hi {
-        *hi = span.exit.t;
+    if exit < *hi {
+        *hi = exit;
     }
     (!(*lo > *hi || *lo >= q.tmax || *hi <= q.tmin)).then_some(())
 }
