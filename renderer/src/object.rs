@@ -390,7 +390,7 @@ pub struct Csg {
     /// A clip whose clipping objects are all uninverted spheres, boxes or planes, and whose
     /// clipped object is none of them (a `cubic` clipped by a sphere): its nearest crossing
     /// is the clipped object's own nearest one where the clipping stretches meet (see
-    /// [`Csg::nearest_clipped`]).
+    /// [`Csg::nearest_clipped`], which the hierarchy's searches call for it).
     pub convex_clip: bool,
     /// Whether a ray that crosses the hull may still pass the node's bounds by: not when
     /// the hull's own box is the bounds (a clipping sphere inside the clipped object's
@@ -626,11 +626,6 @@ impl Object {
 
     /// The nearest crossing inside the query's interval.
     pub fn nearest<'a>(&'a self, q: &Query, scratch: &mut Vec<Hit<'a>>) -> Option<Hit<'a>> {
-        if let Object::Csg(csg) = self
-            && csg.convex_clip
-        {
-            return csg.nearest_clipped(q, scratch);
-        }
         // A leaf's own test costs about what its box test would; CSG nodes check their box.
         if let Object::Csg(csg) = self
             && csg.bounds.is_finite()
@@ -1133,6 +1128,12 @@ mod tests {
                 let q = Query::new(ray, RayKind::Primary, 1e-6, f64::INFINITY);
                 let found = object.nearest(&q, &mut Vec::new()).map(|hit| hit.t);
                 assert_eq!(found, expected.first().copied(), "{source} ray {k}");
+                if let Object::Csg(csg) = object
+                    && csg.convex_clip
+                {
+                    let clipped = csg.nearest_clipped(&q, &mut Vec::new()).map(|hit| hit.t);
+                    assert_eq!(clipped, found, "{source} ray {k}");
+                }
                 let mut hits = Vec::new();
                 object.all_hits(&q, &mut hits);
                 let mut all_hits: Vec<f64> = hits.iter().map(|hit| hit.t).collect();
