@@ -101,6 +101,13 @@ impl Curve {
             _ => DVec3::new(self.encode(v.x), self.encode(v.y), self.encode(v.z)),
         }
     }
+
+    pub fn decode_vec(&self, v: DVec3) -> DVec3 {
+        match self {
+            Curve::Identity => v,
+            _ => DVec3::new(self.decode(v.x), self.decode(v.y), self.decode(v.z)),
+        }
+    }
 }
 
 /// A transfer curve's encoding tabulated over 0..=1 and interpolated linearly, for the
@@ -109,7 +116,9 @@ impl Curve {
 #[derive(Debug, Clone)]
 pub struct EncodeTable {
     curve: Curve,
-    table: Vec<f64>,
+    /// `None` for the identity, which needs no table. An array rather than a vector, so
+    /// that its indices, at most `STEPS`, need no bounds checks.
+    table: Option<Box<[f64; EncodeTable::STEPS + 1]>>,
 }
 
 impl EncodeTable {
@@ -124,10 +133,13 @@ impl EncodeTable {
 
     pub fn new(curve: Curve) -> EncodeTable {
         let table = match curve {
-            Curve::Identity => Vec::new(),
-            _ => (0..=Self::STEPS)
-                .map(|i| curve.encode(i as f64 / Self::STEPS as f64))
-                .collect(),
+            Curve::Identity => None,
+            _ => {
+                let values: Box<[f64]> = (0..=Self::STEPS)
+                    .map(|i| curve.encode(i as f64 / Self::STEPS as f64))
+                    .collect();
+                Some(values.try_into().expect("STEPS + 1 values"))
+            }
         };
         EncodeTable { curve, table }
     }
@@ -137,15 +149,10 @@ impl EncodeTable {
     // inlined).
     #[cfg_attr(not(target_arch = "wasm32"), inline)]
     pub fn encode(&self, v: f64) -> f64 {
-        if self.table.is_empty() || !(0.0..=1.0).contains(&v) {
-            return self.curve.encode(v);
+        match &self.table {
+            Some(table) if (0.0..=1.0).contains(&v) => interpolate(table, v),
+            _ => self.curve.encode(v),
         }
-        let x = v * Self::STEPS as f64;
-        // Through `u32`, whose conversion from a float is a few instructions where
-        // `usize`'s, for values up to 2^64, is a dozen more; `x` is at most `STEPS`.
-        let i = (x as u32 as usize).min(Self::STEPS - 1);
-        let t = x - i as f64;
-        self.table[i] + (self.table[i + 1] - self.table[i]) * t
     }
 
     /// Inlined natively, as `encode` is: every output pixel and every antialiasing
@@ -154,6 +161,31 @@ impl EncodeTable {
     pub fn encode_vec(&self, v: DVec3) -> DVec3 {
         DVec3::new(self.encode(v.x), self.encode(v.y), self.encode(v.z))
     }
+
+    /// [`EncodeTable::encode_vec`] for a colour known to lie in 0..=1, without the tests
+    /// of the table and the range: the same values.
+    #[inline]
+    pub fn encode_unit_vec(&self, v: DVec3) -> DVec3 {
+        match &self.table {
+            Some(table) => DVec3::new(
+                interpolate(table, v.x),
+                interpolate(table, v.y),
+                interpolate(table, v.z),
+            ),
+            None => self.curve.encode_vec(v),
+        }
+    }
+}
+
+/// The table's value at `v` in 0..=1, interpolated linearly.
+#[inline]
+fn interpolate(table: &[f64; EncodeTable::STEPS + 1], v: f64) -> f64 {
+    let x = v * EncodeTable::STEPS as f64;
+    // Through `u32`, whose conversion from a float is a few instructions where `usize`'s,
+    // for values up to 2^64, is a dozen more; `x` is at most `STEPS`.
+    let i = (x as u32 as usize).min(EncodeTable::STEPS - 1);
+    let t = x - i as f64;
+    table[i] + (table[i + 1] - table[i]) * t
 }
 
 #[cfg(test)]
@@ -180,6 +212,20 @@ mod tests {
             assert!(err < 0.5 / 65535.0, "{v}: {err}");
         }
         assert_eq!(table.encode(2.0), Curve::Srgb.encode(2.0));
+    }
+
+    #[test]
+    fn unit_values_encode_as_any_value() {
+        let table = EncodeTable::new(Curve::Srgb);
+        for i in 0..=100_000 {
+            let v = DVec3::splat(i as f64 / 100_000.0);
+            assert_eq!(table.encode_unit_vec(v), table.encode_vec(v), "{v}");
+        }
+        let identity = EncodeTable::new(Curve::Identity);
+        assert_eq!(
+            identity.encode_unit_vec(DVec3::splat(0.3)),
+            DVec3::splat(0.3)
+        );
     }
 
     #[test]

@@ -23,6 +23,7 @@ mod mesh_camera;
 mod normal;
 mod object;
 mod options;
+mod output_values;
 mod parallel;
 mod photons;
 pub mod pipeline;

@@ -8,12 +8,12 @@ use crate::colour::{Curve, EncodeTable, Sample};
 use crate::image::Image;
 use crate::mesh_camera::MeshRays;
 use crate::options::{Extent, Gamma, RenderOptions};
+use crate::output_values::Output;
 use crate::parallel::map_indices;
 use crate::radiosity;
 use crate::sampling::{self, CompareCurve, Compared, Sampler, Subdivider};
 use crate::tracer::Tracer;
 use analysis::scene::{Origin, Scene};
-use glam::DVec3;
 
 /// Renders a scene. `Err` names a scene feature this renderer cannot draw yet.
 pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Image, BuildError> {
@@ -86,23 +86,17 @@ pub fn render_with_warnings(
         }
     };
     let output = Output {
-        // Legacy scenes (before 3.7, without assumed_gamma): POV-Ray 3.7 turns gamma
-        // handling off for them and writes working values as they are.
         legacy: assumed_gamma.is_none(),
         working,
-        file: output_curve(Curve::from_gamma(options.file_gamma.unwrap_or(Gamma::Srgb))),
+        file: Curve::from_gamma(options.file_gamma.unwrap_or(Gamma::Srgb)),
         alpha: options.output_alpha,
     };
     let mut image = Image::new(width, height, options.output_alpha);
-    // Written through the rows of the image rather than pixel by pixel, which computed
-    // and checked an index for every pixel.
-    let lines = image.pixels.chunks_exact_mut(width as usize);
-    for (row, line) in samples.iter().zip(lines.skip(region.y0 as usize)) {
-        let line = &mut line[region.x0 as usize..=region.x1 as usize];
-        for (s, out) in row.iter().zip(line) {
-            *out = output.pixel(*s);
-        }
-    }
+    output.write(
+        &samples,
+        &mut image,
+        (region.x0 as usize, region.y0 as usize),
+    );
     let warnings = world
         .shape_reports
         .iter()
@@ -276,72 +270,12 @@ fn method2(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
     runs.into_iter().flatten().collect()
 }
 
-/// The file's transfer curve: tabulated for sRGB, whose linear toe the table follows to
-/// 16-bit precision; exact for power curves, whose slope at black a table cannot follow.
-fn output_curve(curve: Curve) -> FileCurve {
-    match curve {
-        // A copy of the process's table: a copy is a fraction of the powers that make it,
-        // and the output loop reads its own table faster than one behind a reference.
-        Curve::Srgb => FileCurve::Table(EncodeTable::srgb().clone()),
-        other => FileCurve::Exact(other),
-    }
-}
-
-enum FileCurve {
-    Table(EncodeTable),
-    Exact(Curve),
-}
-
-/// The conversion of averaged samples to output values.
-struct Output {
-    legacy: bool,
-    working: Curve,
-    file: FileCurve,
-    alpha: bool,
-}
-
-impl Output {
-    fn pixel(&self, s: Sample) -> [f32; 4] {
-        let mut colour = s.colour;
-        let mut alpha = 1.0;
-        if self.alpha {
-            alpha = (1.0 - s.transmit).clamp(0.0, 1.0);
-            // Samples carry colour premultiplied by coverage; PNG wants straight alpha.
-            colour = if alpha > 0.0 {
-                colour / alpha
-            } else {
-                DVec3::ZERO
-            };
-        }
-        let clipped = colour.clamp(DVec3::ZERO, DVec3::ONE);
-        let encoded = if self.legacy {
-            clipped
-        } else {
-            let linear = DVec3::new(
-                self.working.decode(clipped.x),
-                self.working.decode(clipped.y),
-                self.working.decode(clipped.z),
-            );
-            match &self.file {
-                FileCurve::Table(t) => t.encode_vec(linear),
-                FileCurve::Exact(c) => c.encode_vec(linear),
-            }
-        };
-        let finite = |v: f64| if v.is_finite() { v as f32 } else { 0.0 };
-        [
-            finite(encoded.x),
-            finite(encoded.y),
-            finite(encoded.z),
-            finite(alpha),
-        ]
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::camera::Camera;
     use analysis::scene::{self, Colour, Finish, Light, Object, Pigment, Shape, Texture};
+    use glam::DVec3;
     use std::sync::Arc;
 
     fn texture(rgb: DVec3) -> Option<Arc<Texture>> {

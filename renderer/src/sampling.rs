@@ -39,11 +39,7 @@ pub struct CompareCurve {
 
 impl CompareCurve {
     pub fn apply(&self, s: Sample) -> Sample {
-        let linear = glam::DVec3::new(
-            self.working.decode(s.colour.x),
-            self.working.decode(s.colour.y),
-            self.working.decode(s.colour.z),
-        );
+        let linear = self.working.decode_vec(s.colour);
         Sample::new(self.aa.encode_vec(linear), s.transmit)
     }
 }
