@@ -37,11 +37,22 @@ impl Image {
     /// The samples at 8 bits, red, green, blue and (when it carries information) alpha
     /// of each pixel, row by row: what an 8-bit PNG file and the Typst plugin hold.
     pub fn samples8(&self) -> Vec<u8> {
-        let channels = if self.has_alpha { 4 } else { 3 };
+        if self.has_alpha {
+            self.quantised::<4>()
+        } else {
+            self.quantised::<3>()
+        }
+    }
+
+    /// The first `N` channels of each pixel at 8 bits. The channel count is a constant so
+    /// that the loop over a pixel's channels unrolls: in WebAssembly, a loop of three or
+    /// four turns cost as much as the quantising.
+    fn quantised<const N: usize>(&self) -> Vec<u8> {
         // Written into place rather than pushed: a push checks the capacity, which in
         // WebAssembly costs as much as the quantising.
-        let mut samples = vec![0; self.pixels.len() * channels];
-        for (out, pixel) in samples.chunks_exact_mut(channels).zip(&self.pixels) {
+        let mut samples = vec![0; self.pixels.len() * N];
+        let (pixels, _) = samples.as_chunks_mut::<N>();
+        for (out, pixel) in pixels.iter_mut().zip(&self.pixels) {
             for (o, &value) in out.iter_mut().zip(pixel) {
                 *o = quantise8(value);
             }
