@@ -44,6 +44,11 @@ pub fn ln(x: f64) -> f64 {
     }
 }
 
+/// ln 2 in two parts, the first with its low bits zero, so that k times it is exact for
+/// the exponents of floats.
+const LN_2_HI: f64 = 6.931_471_803_691_238e-1;
+const LN_2_LO: f64 = 1.908_214_929_270_587_7e-10;
+
 /// The natural logarithm of `x`, within an ulp or two. With x = m·2^e, m between √½ and
 /// √2, f = m - 1 and s = f/(2 + f) (|s| < 0.172): ln m = 2 atanh s = 2s + s·R,
 /// R = 2s²/3 + 2s⁴/5 + …, summed as f - f²/2 + s(f²/2 + R) so that its large part f is
@@ -54,8 +59,6 @@ pub fn series_ln(x: f64) -> f64 {
     if !(x.is_normal() && x > 0.0) {
         return x.ln();
     }
-    const LN_2_HI: f64 = 6.931_471_803_691_238e-1;
-    const LN_2_LO: f64 = 1.908_214_929_270_587_7e-10;
     let bits = x.to_bits();
     let mut e = (bits >> 52) as i64 - 1023;
     let mut m = f64::from_bits((bits & ((1 << 52) - 1)) | (1023 << 52));
@@ -105,16 +108,67 @@ pub fn cbrt(x: f64) -> f64 {
 }
 
 /// `x` to the power `e`: by repeated squaring when `e` is a whole number from 0 to 256,
-/// as highlight exponents (1/roughness, phong_size) mostly are, within a few ulp of
-/// `powf`; in WebAssembly `powf` is a long software routine, and highlights call it for
-/// every light at every hit.
+/// as phong_size mostly is, within a few ulp of `powf`; otherwise, in WebAssembly,
+/// [`series_pow`], inlined (a specular highlight's exponent 1/roughness is seldom whole);
+/// natively the standard one, which there is the faster. In WebAssembly `powf` is a long
+/// software routine, and highlights call it for every light at every hit.
 #[inline]
 pub fn pow(x: f64, e: f64) -> f64 {
     if e.trunc() == e && (0.0..=256.0).contains(&e) {
         powi(x, e as u32)
+    } else if cfg!(target_arch = "wasm32") {
+        series_pow(x, e)
     } else {
         x.powf(e)
     }
+}
+
+/// `x` to the power `e` as exp(e ln x), by [`series_ln`] and [`series_exp`]: within
+/// (|e ln x| + 2) ulp of `powf`, the error of ln x growing with the exponent. Where the
+/// result would be near or beyond the range of floats, or is not a real number, the
+/// standard one answers.
+#[inline]
+pub fn series_pow(x: f64, e: f64) -> f64 {
+    let y = e * series_ln(x);
+    if y.abs() < 700.0 {
+        series_exp(y)
+    } else {
+        x.powf(e)
+    }
+}
+
+/// 1/n! for n from 0 to 13: the Taylor coefficients of e^r.
+const INVERSE_FACTORIALS: [f64; 14] = [
+    1.0,
+    1.0,
+    1.0 / 2.0,
+    1.0 / 6.0,
+    1.0 / 24.0,
+    1.0 / 120.0,
+    1.0 / 720.0,
+    1.0 / 5040.0,
+    1.0 / 40_320.0,
+    1.0 / 362_880.0,
+    1.0 / 3_628_800.0,
+    1.0 / 39_916_800.0,
+    1.0 / 479_001_600.0,
+    1.0 / 6_227_020_800.0,
+];
+
+/// e^y for |y| < 700, within an ulp or two: y = k ln 2 + r with |r| <= ln 2 / 2, ln 2 in
+/// [`series_ln`]'s two parts so that r is exact to the last bits, then e^r by its Taylor
+/// series to the 13th power (the first omitted term is below 1e-17 of it) and 2^k put in
+/// the exponent bits.
+#[inline(always)]
+fn series_exp(y: f64) -> f64 {
+    let k = (y * std::f64::consts::LOG2_E + 0.5).floor();
+    let r = (y - k * LN_2_HI) - k * LN_2_LO;
+    // Horner's rule from the highest power down.
+    let mut series = INVERSE_FACTORIALS[13];
+    for c in INVERSE_FACTORIALS[..13].iter().rev() {
+        series = series * r + c;
+    }
+    series * f64::from_bits(((k as i64 + 1023) as u64) << 52)
 }
 
 /// `x.powi(n)`, inlined: the library's repeated squaring, whose multiplications this
@@ -179,6 +233,44 @@ mod tests {
             }
         }
         assert!(pow(f64::NAN, 2.0).is_nan());
+    }
+
+    #[test]
+    fn series_pow_matches_the_standard_library() {
+        let mut x: f64 = 1e-12;
+        while x < 1e6 {
+            for v in [x, x * 1.414, 1.0 - x.min(0.5), 1.0 + x.min(1e-3)] {
+                for e in [
+                    83.333_333_333_333_33,
+                    0.5,
+                    1.0 / 0.035,
+                    2.2,
+                    -1.7,
+                    300.5,
+                    1e-3,
+                ] {
+                    let (got, want) = (series_pow(v, e), v.powf(e));
+                    let y = (e * v.ln()).abs();
+                    assert!(
+                        got == want || (got - want).abs() <= (y + 2.0) * f64::EPSILON * want,
+                        "{v}^{e}: {got} {want}"
+                    );
+                }
+            }
+            x *= 1.37;
+        }
+        for (v, e) in [
+            (0.0, 83.3),
+            (0.0, -0.5),
+            (-0.5, 83.3),
+            (1.0, 83.3),
+            (1e-300, 83.3),
+        ] {
+            let (got, want) = (series_pow(v, e), v.powf(e));
+            assert!(got == want || (got.is_nan() && want.is_nan()), "{v}^{e}");
+        }
+        assert!(series_pow(f64::NAN, 83.3).is_nan() && series_pow(0.5, f64::NAN).is_nan());
+        assert_eq!(series_pow(f64::INFINITY, 0.5), f64::INFINITY);
     }
 
     #[test]
