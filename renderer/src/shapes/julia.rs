@@ -270,15 +270,21 @@ impl Julia {
     ) -> usize {
         let (mut depth, end) = span;
         let mut next_point = origin + dir * depth;
-        let mut here = self.orbit::<KIND, true>(self.lift(next_point));
+        // The slice's fourth coordinate changes along the ray by `tilt` per unit, so each
+        // step adds to it rather than lifting the point afresh (for a slice across w
+        // alone, the usual, the tilt is zero and the sum exact).
+        let tilt = -self.slice.truncate().dot(dir) / self.slice.w;
+        let mut next_w = self.lift(next_point).w;
+        let mut here = self.orbit::<KIND, true>(next_point.extend(next_w));
         if here.inside {
             // A ray starting inside (a shadow ray from the surface) moves off first.
             next_point += dir * (2.0 * TOLERANCE);
+            next_w += tilt * (2.0 * TOLERANCE);
             depth += 2.0 * TOLERANCE;
             if depth > end {
                 return 0;
             }
-            here = self.orbit::<KIND, true>(self.lift(next_point));
+            here = self.orbit::<KIND, true>(next_point.extend(next_w));
         }
         let mut found = 0;
         'march: while depth < end && found < out.len() {
@@ -291,7 +297,8 @@ impl Julia {
                 }
                 let before = next_point;
                 next_point += dir * step;
-                let next = self.orbit::<KIND, true>(self.lift(next_point));
+                next_w += tilt * step;
+                let next = self.orbit::<KIND, true>(next_point.extend(next_w));
                 if next.inside != here.inside {
                     depth -= step;
                     break (before, step, next);
