@@ -158,6 +158,7 @@ fn assemble(scene: &Scene, settings: BuildSettings) -> Result<(World, Vec<Target
     } else {
         Vec::new()
     };
+    crate::open_sides::mark_open_sides(&mut objects);
     let bvh = Bvh::build(objects);
     // Scenes without `#version 3.7` keep POV-Ray 3.6's rules: with alpha output the
     // background is fully transparent black whatever its colour.

@@ -22,6 +22,7 @@ mod media;
 mod mesh_camera;
 mod normal;
 mod object;
+mod open_sides;
 mod options;
 mod output_values;
 mod parallel;

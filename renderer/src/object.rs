@@ -88,7 +88,32 @@ pub struct Leaf {
     pub standalone: bool,
     /// What the surface does with photons.
     pub photons: SurfacePhotons,
+    /// The sides of a flat leaf's plane no other object reaches into (see
+    /// [`crate::open_sides`]).
+    pub open_sides: OpenSides,
     pub bounds: Aabb,
+}
+
+/// The sides of a flat leaf's plane that no other object reaches into, the side its
+/// normal points to and the other, as two bits of one byte: a scene may hold a hundred
+/// thousand leaves.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct OpenSides(u8);
+
+impl OpenSides {
+    pub const NONE: OpenSides = OpenSides(0);
+    const FRONT: u8 = 1;
+    const BACK: u8 = 2;
+
+    pub fn new(front: bool, back: bool) -> OpenSides {
+        OpenSides((u8::from(front) * Self::FRONT) | (u8::from(back) * Self::BACK))
+    }
+
+    /// Whether the side `along` (the sign of a direction's dot product with the normal)
+    /// points to is open; neither is for a direction in the plane.
+    pub fn towards(self, along: f64) -> bool {
+        (along > 0.0 && self.0 & Self::FRONT != 0) || (along < 0.0 && self.0 & Self::BACK != 0)
+    }
 }
 
 /// A crossing of a ray with a leaf.
@@ -131,6 +156,7 @@ impl Leaf {
             importance: 1.0,
             standalone: false,
             photons: SurfacePhotons::default(),
+            open_sides: OpenSides::NONE,
             bounds,
         }
     }
@@ -154,6 +180,22 @@ impl Leaf {
 
     pub fn inside(&self, p: DVec3) -> bool {
         self.shape.inside(self.local_point(p)) != self.inverse
+    }
+
+    /// The plane of a flat leaf in the world, `normal · x = offset`, with the unit normal
+    /// [`Leaf::normal`] gives at each of its points; `None` for a shape that is not flat
+    /// (or has a normal of its own at each point, as a smooth triangle does) or a frame
+    /// that flattens it.
+    pub fn flat_plane(&self) -> Option<(DVec3, f64)> {
+        let point = match &self.shape {
+            Shape::Plane(plane) => plane.normal * plane.distance,
+            Shape::Disc(_) | Shape::Polygon(_) => DVec3::ZERO,
+            _ => return None,
+        };
+        let to_world = self.to_local.map_or(DAffine3::IDENTITY, |m| m.inverse());
+        let normal = self.normal(DVec3::ZERO, 0);
+        let offset = normal.dot(to_world.transform_point3(point));
+        (to_world.is_finite() && offset.is_finite()).then_some((normal, offset))
     }
 
     /// The corners of the shape's own box carried into the world, when the leaf has a

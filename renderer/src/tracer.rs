@@ -16,7 +16,7 @@ use crate::fast_math;
 use crate::interior::Interior;
 use crate::light::{Incoming, Light};
 use crate::material::{Layer, Pigment};
-use crate::object::{Hit, Leaf, Query};
+use crate::object::{Hit, Leaf, OpenSides, Query};
 use crate::photons::{GatherScratch, PhotonMap};
 use crate::ray::{Ray, RayKind};
 use crate::refraction::{self, Inside};
@@ -143,11 +143,14 @@ pub struct Tracer<'w> {
     /// light: neighbouring shadow rays are usually stopped by it too, and one shape test
     /// is cheaper than the search.
     last_blocker: Option<&'w Leaf>,
-    /// The interior of the object whose surface the current shadow rays leave (null
-    /// otherwise), compared by address only: [`Self::last_blocker`] is not tried again
-    /// when it is that object, which shadows its own points rarely if at all (a disc or
-    /// plane never) while its neighbours' shadow rays keep meeting it.
-    shadow_surface: *const Interior,
+    /// The surface the current shadow rays leave, if they leave one: [`Self::last_blocker`]
+    /// is not tried again when it is that surface, which shadows its own points rarely if
+    /// at all (a disc or plane never) while its neighbours' shadow rays keep meeting it.
+    shadow_surface: Option<&'w Leaf>,
+    /// The last flat surface with an open side (see [`crate::open_sides`]) a ray left,
+    /// with its normal: rays leave one surface again and again, and its normal costs a
+    /// transformation.
+    open_surface: Option<(&'w Leaf, DVec3)>,
     /// The shadow samples of an area light's grid for the current point, kept between
     /// points to spare an allocation each time.
     area_samples: Vec<Option<DVec3>>,
@@ -179,7 +182,8 @@ impl<'w> Tracer<'w> {
             photon_lights: Vec::new(),
             gather_scratch: GatherScratch::default(),
             last_blocker: None,
-            shadow_surface: std::ptr::null(),
+            shadow_surface: None,
+            open_surface: None,
             area_samples: Vec::new(),
             shadow_start: Vec::new(),
             radiosity: world
@@ -336,26 +340,14 @@ impl<'w> Tracer<'w> {
                 diffuse: finish.diffuse,
                 opacity: 1.0,
                 double_illuminate: leaf.double_illuminate,
-                interior: &leaf.interior,
+                leaf,
             };
             for light in world.lights_for(leaf) {
                 own += self.direct_light(light, &shading, None);
             }
-            if let Some(photons) = &world.photons
-                && leaf.photons.collect()
-            {
-                let mut photon_lights = std::mem::take(&mut self.photon_lights);
-                photons.lights_at(p, normal, &mut self.gather_scratch, &mut photon_lights);
-                for &(light, from) in &photon_lights {
-                    let lit = Lit {
-                        colour: light,
-                        direction: from,
-                        highlights: true,
-                    };
-                    own += self.lit(&lit, &shading);
-                }
-                self.photon_lights = photon_lights;
-            }
+            let photon_lights = self.gather_photons(leaf, p, normal);
+            own += self.photons_lit(&photon_lights, &shading);
+            self.keep_photon_lights(photon_lights);
         }
         Sample::new(own, 0.0)
     }
@@ -392,15 +384,11 @@ impl<'w> Tracer<'w> {
         let reflections = self.reflections.len();
         // Gathered photons light a surface as light sources do: not at all where no layer's
         // finish shows light.
-        let mut photon_lights = Vec::new();
-        if let Some(photons) = &world.photons
-            && leaf.photons.collect()
-            && layers.iter().any(|layer| shows_light(&layer.finish))
-        {
-            photon_lights = std::mem::take(&mut self.photon_lights);
-            photon_lights.clear();
-            photons.lights_at(p, raw_normal, &mut self.gather_scratch, &mut photon_lights);
-        }
+        let photon_lights = if layers.iter().any(|layer| shows_light(&layer.finish)) {
+            self.gather_photons(leaf, p, raw_normal)
+        } else {
+            Vec::new()
+        };
         for (i, layer) in layers.iter().enumerate() {
             if trans <= world.adc_bailout {
                 break;
@@ -458,7 +446,7 @@ impl<'w> Tracer<'w> {
                 },
                 opacity,
                 double_illuminate: leaf.double_illuminate,
-                interior: &leaf.interior,
+                leaf,
             };
             // The pretrace wants only the radiosity samples a camera ray's path takes, and a
             // finish that shows no light (`ambient 1 diffuse 0`) needs no shadow rays.
@@ -470,13 +458,8 @@ impl<'w> Tracer<'w> {
                 let under = self.subsurface_light(&profile, leaf, p, raw_normal);
                 own += under * finish.diffuse * opacity;
             }
-            for &(light, from) in photon_lights.iter().filter(|_| !unlit) {
-                let lit = Lit {
-                    colour: light,
-                    direction: from,
-                    highlights: true,
-                };
-                own += self.lit(&lit, &shading);
+            if !unlit {
+                own += self.photons_lit(&photon_lights, &shading);
             }
             colour += own * filter;
 
@@ -486,10 +469,7 @@ impl<'w> Tracer<'w> {
             }
             trans = fast_math::min(greyscale(filter).abs(), 1.0);
         }
-        // The gathering's list goes back with its allocation, for the next point.
-        if photon_lights.capacity() > 0 {
-            self.photon_lights = photon_lights;
-        }
+        self.keep_photon_lights(photon_lights);
 
         // Light from behind the surface.
         let mut transmit = 0.0;
@@ -519,7 +499,7 @@ impl<'w> Tracer<'w> {
                 if new_weight <= world.adc_bailout {
                     continue;
                 }
-                let reflected = self.reflect(ray, p, normal, level, new_weight);
+                let reflected = self.reflect(leaf, &mirrored(ray, p, normal), level, new_weight);
                 let reflected = if exponent != 1.0 && exponent > 0.0 {
                     reflected.max(DVec3::ZERO).powf(1.0 / exponent)
                 } else {
@@ -532,19 +512,62 @@ impl<'w> Tracer<'w> {
         Sample::new(colour, transmit)
     }
 
+    /// The photons lighting the point `p` of `leaf`, whose normal `normal` faces the
+    /// viewer, as lights (see [`PhotonMap::lights_at`]): none where the scene has no
+    /// photons or the surface collects none. The list comes from [`Self::photon_lights`];
+    /// [`Self::keep_photon_lights`] gives it back.
+    fn gather_photons(&mut self, leaf: &Leaf, p: DVec3, normal: DVec3) -> Vec<(DVec3, DVec3)> {
+        let world = self.world;
+        match &world.photons {
+            Some(photons) if leaf.photons.collect() => {
+                let mut lights = std::mem::take(&mut self.photon_lights);
+                photons.lights_at(p, normal, &mut self.gather_scratch, &mut lights);
+                lights
+            }
+            _ => Vec::new(),
+        }
+    }
+
+    /// Keeps the list of [`Self::gather_photons`] with its allocation, for the next point.
+    fn keep_photon_lights(&mut self, lights: Vec<(DVec3, DVec3)>) {
+        if lights.capacity() > 0 {
+            self.photon_lights = lights;
+        }
+    }
+
+    /// Diffuse light and highlights from gathered photons, each `(colour, direction)` lit
+    /// as a light source without shadows.
+    fn photons_lit(&self, lights: &[(DVec3, DVec3)], at: &Shading<'_, '_>) -> DVec3 {
+        let mut colour = DVec3::ZERO;
+        for &(light, from) in lights {
+            let lit = Lit {
+                colour: light,
+                direction: from,
+                highlights: true,
+            };
+            colour += self.lit(&lit, at);
+        }
+        colour
+    }
+
     /// Diffuse light and highlights from one light source. A light behind the surface
     /// lights it only through `double_illuminate` (both sides alike) or the finish's
     /// backside diffuse (`diffuse front, back`, without highlights).
     ///
     /// `arrival`: the entry of [`Tracer::arrivals`] that keeps the light's arrival at the
     /// point, where other layers there may need it too.
-    fn direct_light(&mut self, light: &Light, at: &Shading<'_>, arrival: Option<usize>) -> DVec3 {
+    fn direct_light(
+        &mut self,
+        light: &Light,
+        at: &Shading<'_, 'w>,
+        arrival: Option<usize>,
+    ) -> DVec3 {
         let Shading {
             p,
             normal,
             finish,
             double_illuminate,
-            interior,
+            leaf,
             ..
         } = *at;
         let Some(incoming) = light.incoming(p) else {
@@ -558,12 +581,12 @@ impl<'w> Tracer<'w> {
             Some(entry) => match self.arrivals[entry] {
                 Some(colour) => colour,
                 None => {
-                    let colour = self.arriving(light, p, &incoming, interior);
+                    let colour = self.arriving(light, p, &incoming, leaf);
                     self.arrivals[entry] = Some(colour);
                     colour
                 }
             },
-            None => self.arriving(light, p, &incoming, interior),
+            None => self.arriving(light, p, &incoming, leaf),
         };
         // Negative lights darken, as in POV-Ray: only a light too weak either way is skipped.
         if light_colour.abs().max_element() < 1e-10 {
@@ -578,18 +601,24 @@ impl<'w> Tracer<'w> {
         self.lit(&lit, at)
     }
 
-    /// The light of `light` that reaches `p`, on a surface of an object of interior
-    /// `surface`, past the shadow-casting objects, through its projection object and the
-    /// atmosphere.
+    /// The light of `light` that reaches `p`, on the surface of `surface`, past the
+    /// shadow-casting objects, through its projection object and the atmosphere.
     pub(crate) fn arriving(
         &mut self,
         light: &Light,
         p: DVec3,
         incoming: &Incoming,
-        surface: &Interior,
+        surface: &'w Leaf,
     ) -> DVec3 {
         let world = self.world;
-        let mut colour = if !light.shadowless && world.quality.shadows {
+        let mut colour = if light.shadowless || !world.quality.shadows {
+            match self.projected_reach(light, p, incoming.direction, incoming.distance) {
+                Some(_) => incoming.colour,
+                None => DVec3::ZERO,
+            }
+        } else if self.unobstructed(light, incoming, surface) {
+            incoming.colour
+        } else {
             // Inside containers of media the shadow ray crosses their media up to where it
             // leaves them, as POV-Ray's renders show (measured: a white ball in a box of
             // `absorption 0.15` lit from above the box shows 0.291, the light dimmed over
@@ -602,21 +631,14 @@ impl<'w> Tracer<'w> {
                     self.inside
                         .interiors()
                         .iter()
-                        .filter(|i| !i.media.is_empty() && !std::ptr::eq(**i, surface)),
+                        .filter(|i| !i.media.is_empty() && !std::ptr::eq(**i, &*surface.interior)),
                 );
             }
-            self.shadow_surface = surface;
+            self.shadow_surface = Some(surface);
             let colour = self.unshadowed(light, p, incoming);
-            self.shadow_surface = std::ptr::null();
+            self.shadow_surface = None;
             self.shadow_start.clear();
             colour
-        } else if self
-            .projected_reach(light, p, incoming.direction, incoming.distance)
-            .is_some()
-        {
-            incoming.colour
-        } else {
-            DVec3::ZERO
         };
         if light.media_attenuation && world.atmosphere.is_some() {
             colour *= self.atmospheric_attenuation(p, incoming);
@@ -624,9 +646,40 @@ impl<'w> Tracer<'w> {
         colour
     }
 
+    /// Whether the light of `light` arriving at a point of `surface` from `incoming`'s
+    /// direction is sure to meet nothing on its way: a light without an area, straight and
+    /// not through media, that comes from a side of the flat surface's plane no object
+    /// reaches (see [`crate::open_sides`]). [`Self::unshadowed`] would search and find
+    /// nothing.
+    fn unobstructed(&mut self, light: &Light, incoming: &Incoming, surface: &'w Leaf) -> bool {
+        let world = self.world;
+        !world.participating
+            && light.projected_through.is_none()
+            && (light.area.is_none() || !world.quality.area_lights)
+            && self.leads_nowhere(surface, incoming.direction)
+    }
+
+    /// Whether a ray leaving a point of the surface of `leaf` along `direction` meets
+    /// nothing: the leaf is flat and the ray goes into a side of its plane that no other
+    /// object reaches.
+    fn leads_nowhere(&mut self, leaf: &'w Leaf, direction: DVec3) -> bool {
+        if leaf.open_sides == OpenSides::NONE {
+            return false;
+        }
+        let normal = match self.open_surface {
+            Some((surface, normal)) if std::ptr::eq(surface, leaf) => normal,
+            _ => {
+                let normal = leaf.normal(DVec3::ZERO, 0);
+                self.open_surface = Some((leaf, normal));
+                normal
+            }
+        };
+        leaf.open_sides.towards(normal.dot(direction))
+    }
+
     /// Diffuse light and highlights from light arriving unshadowed, from a light source or
     /// from photons.
-    fn lit(&self, lit: &Lit, at: &Shading<'_>) -> DVec3 {
+    fn lit(&self, lit: &Lit, at: &Shading<'_, '_>) -> DVec3 {
         let Shading {
             p,
             normal,
@@ -815,7 +868,9 @@ impl<'w> Tracer<'w> {
         };
         let mut q = segment(self, origin, remaining);
         if let Some(blocker) = self.last_blocker
-            && !std::ptr::eq(&*blocker.interior, self.shadow_surface)
+            && !self
+                .shadow_surface
+                .is_some_and(|surface| std::ptr::eq(surface, blocker))
             && blocker.blocks(&q, photons_stop)
         {
             return DVec3::ZERO;
@@ -891,7 +946,7 @@ impl<'w> Tracer<'w> {
         }
         let interior: &'w Interior = &leaf.interior;
         if self.inside.band.is_some() || !crate::dispersion::disperses(interior) {
-            return self.refracted(ray, p, normal, interior, level, weight);
+            return self.refracted(ray, p, normal, leaf, level, weight);
         }
         let bands = self.spectra.bands(interior.dispersion_samples).to_vec();
         let mut total = Sample::default();
@@ -899,7 +954,7 @@ impl<'w> Tracer<'w> {
         for band in bands {
             self.inside.band = Some(band.position);
             let band_weight = weight * band.colour.max_element();
-            let (s, reflected) = self.refracted(ray, p, normal, interior, level, band_weight);
+            let (s, reflected) = self.refracted(ray, p, normal, leaf, level, band_weight);
             all_reflected &= reflected;
             total = total
                 + Sample::new(
@@ -917,23 +972,24 @@ impl<'w> Tracer<'w> {
         ray: &Ray,
         p: DVec3,
         normal: DVec3,
-        interior: &'w Interior,
+        leaf: &'w Leaf,
         level: u32,
         weight: f64,
     ) -> (Sample, bool) {
         let saved = self.inside.clone();
-        let ior = self.inside.cross(interior);
+        let ior = self.inside.cross(&leaf.interior);
         let result = match refraction::refract(ray.direction, normal, ior) {
             Some(direction) => {
                 let next = Ray::new(p, direction);
+                let kind = RayKind::Transmitted;
                 (
-                    self.trace(&next, RayKind::Transmitted, level + 1, weight),
+                    self.trace_leaving(leaf, &next, kind, level + 1, weight),
                     false,
                 )
             }
             None => {
                 self.inside.restore(&saved);
-                let reflected = self.reflect(ray, p, normal, level, weight);
+                let reflected = self.reflect(leaf, &mirrored(ray, p, normal), level, weight);
                 (Sample::new(reflected, 0.0), true)
             }
         };
@@ -941,11 +997,32 @@ impl<'w> Tracer<'w> {
         result
     }
 
-    /// The colour seen in the mirror direction.
-    fn reflect(&mut self, ray: &Ray, p: DVec3, normal: DVec3, level: u32, weight: f64) -> DVec3 {
-        let next = Ray::new(p, refraction::reflect(ray.direction, normal));
-        self.trace(&next, RayKind::Reflected, level + 1, weight)
+    /// The colour seen along `mirrored`, the mirror image of the ray that met `leaf`.
+    fn reflect(&mut self, leaf: &'w Leaf, mirrored: &Ray, level: u32, weight: f64) -> DVec3 {
+        self.trace_leaving(leaf, mirrored, RayKind::Reflected, level + 1, weight)
             .colour
+    }
+
+    /// [`Self::trace`] for a ray leaving the surface of `leaf`: the background at once
+    /// when the surface is flat and the ray goes into a side of its plane no object
+    /// reaches (see [`crate::open_sides`]), as the search would find, unless fog or media
+    /// lie along it.
+    fn trace_leaving(
+        &mut self,
+        leaf: &'w Leaf,
+        ray: &Ray,
+        kind: RayKind,
+        level: u32,
+        weight: f64,
+    ) -> Sample {
+        let world = self.world;
+        if level <= world.max_trace_level
+            && !world.participating
+            && self.leads_nowhere(leaf, ray.direction)
+        {
+            return self.missed(ray, kind);
+        }
+        self.trace(ray, kind, level, weight)
     }
 }
 
@@ -962,7 +1039,7 @@ struct Stack<'a> {
 /// facing the viewer, the ray that found it, its pigment colour and finish, how opaque the
 /// layer is, and whether both sides take light alike.
 #[derive(Clone, Copy)]
-struct Shading<'a> {
+struct Shading<'a, 'w> {
     p: DVec3,
     normal: DVec3,
     ray: &'a Ray,
@@ -973,8 +1050,8 @@ struct Shading<'a> {
     diffuse: f64,
     opacity: f64,
     double_illuminate: bool,
-    /// The interior of the object the point lies on.
-    interior: &'a Interior,
+    /// The surface the point lies on.
+    leaf: &'w Leaf,
 }
 
 /// Light arriving at a point, ready for the lighting model.
@@ -1007,6 +1084,11 @@ fn facing(
     } else {
         None
     }
+}
+
+/// The mirror image of `ray` in the surface of normal `normal` at `p`, leaving `p`.
+fn mirrored(ray: &Ray, p: DVec3, normal: DVec3) -> Ray {
+    Ray::new(p, refraction::reflect(ray.direction, normal))
 }
 
 /// How much light is left after `depth` inside an interior with `fade_distance`,

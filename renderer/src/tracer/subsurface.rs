@@ -160,7 +160,7 @@ impl<'w> Tracer<'w> {
             if cos <= 0.0 {
                 continue;
             }
-            total += self.arriving(light, x, &incoming, &leaf.interior) * cos;
+            total += self.arriving(light, x, &incoming, leaf) * cos;
         }
         total
     }
