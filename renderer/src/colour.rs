@@ -1,6 +1,7 @@
 //! Colour arithmetic of the tracer: a traced sample (colour plus transmittance towards the
 //! background, which becomes alpha) and the transfer curves of POV-Ray 3.7's gamma handling.
 
+use crate::fast_math;
 use crate::options::Gamma;
 use glam::DVec3;
 use std::ops::{Add, Mul};
@@ -63,15 +64,21 @@ impl Curve {
     /// Linear light to an encoded value. Negative values stay negative so that no NaN
     /// appears; the caller clips.
     pub fn encode(&self, v: f64) -> f64 {
+        self.encode_by(v, f64::powf)
+    }
+
+    /// [`Curve::encode`] with the powers taken by `pow`.
+    #[inline(always)]
+    fn encode_by(&self, v: f64, pow: impl Fn(f64, f64) -> f64) -> f64 {
         match *self {
             Curve::Identity => v,
-            Curve::Power(g) => v.signum() * v.abs().powf(1.0 / g),
+            Curve::Power(g) => v.signum() * pow(v.abs(), 1.0 / g),
             Curve::Srgb => {
                 let a = v.abs();
                 let e = if a <= 0.003_130_8 {
                     a * 12.92
                 } else {
-                    1.055 * a.powf(1.0 / 2.4) - 0.055
+                    1.055 * pow(a, 1.0 / 2.4) - 0.055
                 };
                 e * v.signum()
             }
@@ -151,7 +158,17 @@ impl EncodeTable {
     pub fn encode(&self, v: f64) -> f64 {
         match &self.table {
             Some(table) if (0.0..=1.0).contains(&v) => interpolate(table, v),
-            _ => self.curve.encode(v),
+            // Outside the table: mostly colours brighter than white, such as highlights,
+            // which the output clips and the antialiasing test compares by the threshold.
+            // In WebAssembly by the inlined series (within a few ulp) instead of `powf`,
+            // a long software routine there; natively by `powf`, as the table is.
+            _ => self.curve.encode_by(v, |x, e| {
+                if cfg!(target_arch = "wasm32") {
+                    fast_math::series_pow(x, e)
+                } else {
+                    x.powf(e)
+                }
+            }),
         }
     }
 
