@@ -143,7 +143,7 @@ impl EncodeTable {
             Curve::Identity => None,
             _ => {
                 let values: Box<[f64]> = (0..=Self::STEPS)
-                    .map(|i| curve.encode_by(i as f64 / Self::STEPS as f64, table_pow))
+                    .map(|i| curve.encode_by(i as f64 / Self::STEPS as f64, fast_math::any_pow))
                     .collect();
                 Some(values.try_into().expect("STEPS + 1 values"))
             }
@@ -160,7 +160,7 @@ impl EncodeTable {
             Some(table) if (0.0..=1.0).contains(&v) => interpolate(table, v),
             // Outside the table: mostly colours brighter than white, such as highlights,
             // which the output clips and the antialiasing test compares by the threshold.
-            _ => self.curve.encode_by(v, table_pow),
+            _ => self.curve.encode_by(v, fast_math::any_pow),
         }
     }
 
@@ -183,19 +183,6 @@ impl EncodeTable {
             ),
             None => self.curve.encode_vec(v),
         }
-    }
-}
-
-/// The powers of an [`EncodeTable`]'s curve, for its thousands of entries (built for every
-/// render) and the values outside it: in WebAssembly by the inlined series, within a few
-/// ulp, where `powf` is a long software routine (309 wasm instructions a call); natively
-/// by `powf`.
-#[inline(always)]
-fn table_pow(x: f64, e: f64) -> f64 {
-    if cfg!(target_arch = "wasm32") {
-        fast_math::series_pow(x, e)
-    } else {
-        x.powf(e)
     }
 }
 

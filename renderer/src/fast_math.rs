@@ -116,7 +116,17 @@ pub fn cbrt(x: f64) -> f64 {
 pub fn pow(x: f64, e: f64) -> f64 {
     if e.trunc() == e && (0.0..=256.0).contains(&e) {
         powi(x, e as u32)
-    } else if cfg!(target_arch = "wasm32") {
+    } else {
+        any_pow(x, e)
+    }
+}
+
+/// `x` to the power `e`, whole or not: in WebAssembly [`series_pow`], inlined, where
+/// `powf` is a long software routine (309 wasm instructions a call); natively `powf`,
+/// which there is the faster.
+#[inline(always)]
+pub fn any_pow(x: f64, e: f64) -> f64 {
+    if cfg!(target_arch = "wasm32") {
         series_pow(x, e)
     } else {
         x.powf(e)
