@@ -43,18 +43,29 @@ impl FidelityScene {
 
     /// Evaluates and renders `source` as this scene, stopping before PNG encoding.
     pub fn render_image(&self, source: &str) -> Result<renderer::Image, String> {
-        let options = self.render_options();
-        let name = self.file_name();
+        self.render_files(&self.files(source))
+    }
+
+    /// The scene's text under its file name, with its directory's includes and assets: what
+    /// a render of it may read.
+    pub fn files(&self, source: &str) -> analysis::MemoryFiles {
         let mut files = analysis::MemoryFiles::new();
-        files.insert(name, source);
+        files.insert(self.file_name(), source);
         for (include, text) in self.includes() {
             files.insert(include, text);
         }
         for (asset, bytes) in self.assets() {
             files.insert_bytes(asset, bytes);
         }
+        files
+    }
+
+    /// Evaluates and renders the scene from `files` (see [`FidelityScene::files`]),
+    /// stopping before PNG encoding.
+    pub fn render_files(&self, files: &analysis::MemoryFiles) -> Result<renderer::Image, String> {
         let rendered =
-            renderer::pipeline::render_source(name, &files, &options).map_err(|f| f.to_human())?;
+            renderer::pipeline::render_source(self.file_name(), files, &self.render_options())
+                .map_err(|f| f.to_human())?;
         Ok(rendered.image)
     }
 
