@@ -33,6 +33,9 @@ pub struct Camera {
     normal: Option<scene::Normal>,
     /// A mesh camera's faces.
     mesh: Option<MeshRays>,
+    /// A perspective camera without a normal pattern, at a finite location: the common
+    /// camera, whose rays [`Camera::ray`] finds inline.
+    plain_perspective: bool,
 }
 
 impl Camera {
@@ -59,6 +62,9 @@ impl Camera {
                 }
                 _ => None,
             },
+            plain_perspective: matches!(camera.kind, CameraKind::Perspective)
+                && camera.normal.is_none()
+                && camera.location.is_finite(),
         };
         // These projections use unit vectors; the others use the vectors' lengths.
         if matches!(
@@ -105,14 +111,17 @@ impl Camera {
     #[inline]
     pub fn ray(&self, x: f64, y: f64, width: f64, height: f64) -> Option<Ray> {
         // The common camera's rays are found inline, without a call (the same arithmetic
-        // as `projected_ray`'s).
-        if let (CameraKind::Perspective, None) = (&self.kind, &self.normal) {
+        // as `projected_ray`'s, and the same rays). Its location is finite, and a
+        // direction scaled by a finite, positive reciprocal of its length (the test of
+        // `normalize_or_zero`) is finite and not zero, its largest component near 1:
+        // the tests `projected_ray` makes of its normalized direction pass.
+        if self.plain_perspective {
             let x0 = x / width - 0.5;
             let y0 = 0.5 - y / height;
-            let direction = (self.direction + x0 * self.right + y0 * self.up).normalize_or_zero();
-            let origin = self.location;
-            return (direction != DVec3::ZERO && direction.is_finite() && origin.is_finite())
-                .then(|| Ray::new(origin, direction));
+            let direction = self.direction + x0 * self.right + y0 * self.up;
+            let rcp = direction.length_recip();
+            return (rcp.is_finite() && rcp > 0.0)
+                .then(|| Ray::new(self.location, direction * rcp));
         }
         self.projected_ray(x, y, width, height)
     }
