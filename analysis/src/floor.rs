@@ -22,9 +22,73 @@ pub(crate) fn floor(x: f64) -> f64 {
     }
 }
 
+/// [`floor`] with the floor as an integer too, for the lattices whose cells index tables
+/// (the noise's, the pavement's). Natively the integer comes out of the rounding addition
+/// itself: adding 1.5 * 2^52 to a float under 2^51 in size leaves its nearest whole number
+/// in the sum's low bits, so that the integer is a subtraction of bit patterns instead of a
+/// conversion, which checks for overflow and NaN. Elsewhere, and for larger values and NaN,
+/// the floor is converted as `as i64` does (saturating, NaN to 0).
+#[inline(always)]
+pub(crate) fn floor_whole(x: f64) -> (f64, i64) {
+    // Below 2^51 in size the sum lies in [2^52, 2^53), where floats are the whole numbers.
+    const ROUNDS_BELOW: f64 = 2_251_799_813_685_248.0;
+    const ROUNDER: f64 = 6_755_399_441_055_744.0;
+    if !cfg!(target_arch = "wasm32") && x.abs() < ROUNDS_BELOW {
+        let sum = x + ROUNDER;
+        // Both in one binade, where the bit patterns count whole numbers.
+        let whole = sum.to_bits().wrapping_sub(ROUNDER.to_bits()) as i64;
+        // Exact; the sign keeps -0.0 as it is and makes the nearest of a small negative
+        // `x` -0.0, below which it is not (rounding never turns a sign but to zero).
+        let nearest = (sum - ROUNDER).copysign(x);
+        if nearest > x {
+            (nearest - 1.0, whole - 1)
+        } else {
+            (nearest, whole)
+        }
+    } else {
+        let floor = floor(x);
+        (floor, floor as i64)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn floor_whole_is_the_floor_and_its_integer() {
+        let mut values = vec![
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            2.5,
+            -2.5,
+            1e-300,
+            -1e-300,
+            2_251_799_813_685_247.5,
+            -2_251_799_813_685_247.5,
+            2_251_799_813_685_248.0,
+            -2_251_799_813_685_248.0,
+            1e300,
+            -1e300,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ];
+        let mut x: f64 = 1e-3;
+        while x < 1e17 {
+            for y in [x, x.next_up(), x.next_down(), x.round() + 0.5] {
+                values.extend([y, -y]);
+            }
+            x *= 1.37;
+        }
+        for v in values {
+            let (f, whole) = floor_whole(v);
+            assert_eq!(f.to_bits(), v.floor().to_bits(), "{v}");
+            assert_eq!(whole, v.floor() as i64, "{v}");
+        }
+    }
 
     #[test]
     fn floor_is_f64_floor() {

@@ -7,7 +7,7 @@
 
 use super::improved_tables::{COLUMN_SHIFT, GRADIENTS, ROW_SHIFT};
 use super::s_curve;
-use crate::floor::floor;
+use crate::floor::floor_whole;
 use glam::DVec3;
 
 /// Where the lattice sits: its points are where the coordinates plus this are integers
@@ -30,9 +30,8 @@ fn gradient(x: i64, y: i64, z: i64) -> DVec3 {
 pub(super) fn unclipped(p: DVec3) -> f64 {
     // The tables count the lattice points from the one below (0, 0, 0).
     let q = p + DVec3::splat(LATTICE_SHIFT - 1.0);
-    let f = DVec3::new(floor(q.x), floor(q.y), floor(q.z));
-    let t = q - f;
-    let (x, y, z) = (f.x as i64, f.y as i64, f.z as i64);
+    let ((fx, x), (fy, y), (fz, z)) = (floor_whole(q.x), floor_whole(q.y), floor_whole(q.z));
+    let t = q - DVec3::new(fx, fy, fz);
     let s = DVec3::new(s_curve(t.x), s_curve(t.y), s_curve(t.z));
     let mut sum = 0.0;
     for i in 0..2 {

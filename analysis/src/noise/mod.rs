@@ -11,7 +11,7 @@ mod improved;
 mod improved_tables;
 mod tables;
 
-use crate::floor::floor;
+use crate::floor::floor_whole;
 use glam::DVec3;
 use std::ops::{Add, Mul, Sub};
 use tables::{COEFFICIENTS, HASH};
@@ -143,12 +143,14 @@ impl Cell {
     #[inline(always)]
     fn around(p: DVec3) -> Cell {
         let q = p + DVec3::splat(LATTICE_OFFSET);
-        let f = DVec3::new(floor(q.x), floor(q.y), floor(q.z));
+        let (fx, x) = floor_whole(q.x);
+        let (fy, y) = floor_whole(q.y);
+        let (fz, z) = floor_whole(q.z);
         Cell {
-            x: f.x as i64,
-            y: f.y as i64,
-            z: f.z as i64,
-            t: q - f,
+            x,
+            y,
+            z,
+            t: q - DVec3::new(fx, fy, fz),
         }
     }
 
@@ -217,6 +219,14 @@ fn lattice(c: i64, step: i64) -> usize {
 
 /// POV-Ray's original noise less 0.5: roughly −1..1, 0 on average.
 pub fn signed(p: DVec3) -> f64 {
+    signed_inline(p)
+}
+
+/// [`signed`], inlined into the noises built on it: granite and wrinkles call
+/// [`octave_noise`] for each octave, and the call of `signed` inside it passed the point
+/// through memory again.
+#[inline(always)]
+fn signed_inline(p: DVec3) -> f64 {
     // A coordinate that is not finite makes the fractions, and with them the blend, NaN:
     // one test of the result instead of one per coordinate.
     let value = blend_cell(p, &CORNERS);
@@ -225,11 +235,19 @@ pub fn signed(p: DVec3) -> f64 {
 
 /// The noise of POV-Ray's `noise_generator` before its clipping to 0..1: 1 the original
 /// noise, 2 the range-corrected one, 3 the one POV-Ray calls Perlin's improved noise.
+#[inline(always)]
 fn unclipped(p: DVec3, generator: u8) -> f64 {
     match generator {
-        1 => signed(p) + 0.5,
         3 => improved::unclipped(p),
-        _ => (signed(p) + 0.5 + RANGE_SHIFT) * RANGE_SCALE,
+        // One copy of the blend for generators 1 and 2.
+        _ => {
+            let original = signed_inline(p) + 0.5;
+            if generator == 1 {
+                original
+            } else {
+                (original + RANGE_SHIFT) * RANGE_SCALE
+            }
+        }
     }
 }
 
