@@ -29,6 +29,10 @@ pub struct Julia {
     /// The bounding sphere's radius, and the squared norm past which an orbit escapes.
     pub radius: f64,
     pub exit: f64,
+    /// The unit vector along the parameter's vector part (any unit vector when that part
+    /// is zero), and that part's length: see [`Julia::quaternion_orbit`].
+    pub axis: DVec3,
+    pub axial: f64,
 }
 
 impl Julia {
@@ -50,6 +54,13 @@ impl Julia {
             }
             JuliaAlgebra::Hypercomplex => (4.0, 16.0),
         };
+        let vector = DVec3::new(parameter.y, parameter.z, parameter.w);
+        let axial = vector.length();
+        let axis = if axial > 0.0 {
+            vector / axial
+        } else {
+            DVec3::X
+        };
         Julia {
             parameter,
             algebra,
@@ -60,6 +71,8 @@ impl Julia {
             slice_distance,
             radius,
             exit,
+            axis,
+            axial,
         }
     }
 
@@ -98,25 +111,69 @@ impl Julia {
     #[inline(always)]
     fn orbit<const KIND: u8, const DISTANCE: bool>(&self, h: DVec4) -> Orbit {
         match KIND {
-            QUATERNION_CUBE => self.quaternion_orbit::<DISTANCE>(h, 3.0),
-            QUATERNION_SQUARE => self.quaternion_orbit::<DISTANCE>(h, 2.0),
+            QUATERNION_CUBE => self.quaternion_orbit::<DISTANCE>(self.plane_point(h), 3.0),
+            QUATERNION_SQUARE => self.quaternion_orbit::<DISTANCE>(self.plane_point(h), 2.0),
             _ => self.hypercomplex_orbit::<DISTANCE>(h),
+        }
+    }
+
+    /// The march's orbit at `depth` along the unit vector `dir` from `origin`, whose
+    /// points in the orbit plane are `line`'s.
+    #[inline(always)]
+    fn orbit_on<const KIND: u8>(
+        &self,
+        line: &PlaneLine,
+        origin: DVec3,
+        dir: DVec3,
+        depth: f64,
+    ) -> Orbit {
+        match KIND {
+            QUATERNION_CUBE => self.quaternion_orbit::<true>(line.at(depth), 3.0),
+            QUATERNION_SQUARE => self.quaternion_orbit::<true>(line.at(depth), 2.0),
+            _ => self.hypercomplex_orbit::<true>(self.lift(origin + dir * depth)),
+        }
+    }
+
+    /// The point `h` of 4-space in the coordinates of its quaternion orbit's plane (see
+    /// [`Julia::quaternion_orbit`]).
+    #[inline(always)]
+    fn plane_point(&self, h: DVec4) -> PlanePoint {
+        let v = DVec3::new(h.y, h.z, h.w);
+        PlanePoint {
+            real: h.x,
+            along: v.dot(self.axis),
+            // The cross product keeps the across part accurate where v nearly lies
+            // along the axis, as |v|² - along² would not.
+            across: v.cross(self.axis).length_squared(),
         }
     }
 
     /// Quaternion squares or cubes. Quaternion norms multiply, so the derivative's norm
     /// for the distance estimate is the power times the product of the orbit's norms.
+    ///
+    /// Both powers scale the vector part v of h = (a, v) by a real number,
+    /// (a, v)² = (a² - |v|², 2a·v) and (a, v)³ = (a³ - 3a|v|², (3a² - |v|²)·v), before the
+    /// parameter's vector part is added; so the orbit's vector parts stay in the plane of
+    /// the first one and the parameter's, and three reals follow the orbit there: a, the
+    /// component `along` the parameter's vector part, and the squared component `across`
+    /// it, which the scaling multiplies by the scale's square. That is a quarter of the
+    /// arithmetic of a step in four coordinates; the norms, all a march asks for, are
+    /// the same but for rounding.
     #[inline(always)]
-    fn quaternion_orbit<const DISTANCE: bool>(&self, h: DVec4, power: f64) -> Orbit {
-        let p = self.parameter;
-        let (mut x, mut y, mut z, mut w) = (h.x, h.y, h.z, h.w);
+    fn quaternion_orbit<const DISTANCE: bool>(&self, start: PlanePoint, power: f64) -> Orbit {
+        let (c, axial) = (self.parameter.x, self.axial);
+        let PlanePoint {
+            real: mut a,
+            mut along,
+            mut across,
+        } = start;
         let mut product: f64 = 1.0;
         let mut scale = 1.0;
         let mut peak: f64 = 0.0;
         for _ in 0..self.iterations {
-            let d = y * y + z * z + w * w;
-            let x2 = x * x;
-            let norm = x2 + d;
+            let a2 = a * a;
+            let vector = along * along + across;
+            let norm = a2 + vector;
             if norm > self.exit {
                 let value = norm - self.exit;
                 let stretch = stretch(scale, product, power);
@@ -143,17 +200,14 @@ impl Julia {
             product *= norm;
             scale *= power;
             if power == 2.0 {
-                let x2w = 2.0 * x;
-                y = x2w * y + p.y;
-                z = x2w * z + p.z;
-                w = x2w * w + p.w;
-                x = x2 - d + p.x;
+                across *= 4.0 * a2;
+                along = 2.0 * a * along + axial;
+                a = a2 - vector + c;
             } else {
-                let t = 3.0 * x2 - d;
-                x = x * (x2 - 3.0 * d) + p.x;
-                y = y * t + p.y;
-                z = z * t + p.z;
-                w = w * t + p.w;
+                let t = 3.0 * a2 - vector;
+                a = a * (a2 - 3.0 * vector) + c;
+                along = along * t + axial;
+                across *= t * t;
             }
         }
         self.bounded::<DISTANCE>(peak, stretch(scale, product, power))
@@ -269,43 +323,34 @@ impl Julia {
         out: &mut [f64],
     ) -> usize {
         let (mut depth, end) = span;
-        let mut next_point = origin + dir * depth;
-        // The slice's fourth coordinate changes along the ray by `tilt` per unit, so each
-        // step adds to it rather than lifting the point afresh (for a slice across w
-        // alone, the usual, the tilt is zero and the sum exact).
-        let tilt = -self.slice.truncate().dot(dir) / self.slice.w;
-        let mut next_w = self.lift(next_point).w;
-        let mut here = self.orbit::<KIND, true>(next_point.extend(next_w));
+        // Each orbit starts afresh from its depth, the point of the ray no sum of steps.
+        let line = PlaneLine::new(self, origin, dir);
+        let mut here = self.orbit_on::<KIND>(&line, origin, dir, depth);
         if here.inside {
             // A ray starting inside (a shadow ray from the surface) moves off first.
-            next_point += dir * (2.0 * TOLERANCE);
-            next_w += tilt * (2.0 * TOLERANCE);
             depth += 2.0 * TOLERANCE;
             if depth > end {
                 return 0;
             }
-            here = self.orbit::<KIND, true>(next_point.extend(next_w));
+            here = self.orbit_on::<KIND>(&line, origin, dir, depth);
         }
         let mut found = 0;
         'march: while depth < end && found < out.len() {
             // March until a step lands on the other side of the boundary.
-            let (point, step, next) = loop {
+            let (before, step, next) = loop {
                 let step = max(here.dist, self.min_step);
+                let before = depth;
                 depth += step;
                 if depth > end {
                     break 'march;
                 }
-                let before = next_point;
-                next_point += dir * step;
-                next_w += tilt * step;
-                let next = self.orbit::<KIND, true>(next_point.extend(next_w));
+                let next = self.orbit_on::<KIND>(&line, origin, dir, depth);
                 if next.inside != here.inside {
-                    depth -= step;
                     break (before, step, next);
                 }
                 here = next;
             };
-            depth += self.refine::<KIND>(point, dir, step, &here, &next);
+            depth = before + self.refine::<KIND>(origin + dir * before, dir, step, &here, &next);
             if depth > end {
                 break;
             }
@@ -531,6 +576,52 @@ impl Orbit {
             dist,
             value,
             stretch,
+        }
+    }
+}
+
+/// A point of 4-space as the three reals its quaternion orbit follows (see
+/// [`Julia::quaternion_orbit`]): the real part, and the components of the vector part
+/// along the parameter's vector part and (squared) across it.
+#[derive(Debug, Clone, Copy)]
+struct PlanePoint {
+    real: f64,
+    along: f64,
+    across: f64,
+}
+
+/// A ray through the slice in the coordinates of [`PlanePoint`]: the real part and the
+/// along component are linear in the depth, and the across component is the squared
+/// length of a vector that is, the cross product of the vector part with the axis.
+struct PlaneLine {
+    real: (f64, f64),
+    along: (f64, f64),
+    across: (DVec3, DVec3),
+}
+
+impl PlaneLine {
+    /// The ray from `origin` along the unit vector `dir`, each pair the value at depth 0
+    /// and the change per unit depth.
+    fn new(julia: &Julia, origin: DVec3, dir: DVec3) -> PlaneLine {
+        let start = julia.lift(origin);
+        let tilt = -julia.slice.truncate().dot(dir) / julia.slice.w;
+        let (v, dv) = (
+            DVec3::new(start.y, start.z, start.w),
+            DVec3::new(dir.y, dir.z, tilt),
+        );
+        PlaneLine {
+            real: (start.x, dir.x),
+            along: (v.dot(julia.axis), dv.dot(julia.axis)),
+            across: (v.cross(julia.axis), dv.cross(julia.axis)),
+        }
+    }
+
+    #[inline(always)]
+    fn at(&self, depth: f64) -> PlanePoint {
+        PlanePoint {
+            real: self.real.0 + self.real.1 * depth,
+            along: self.along.0 + self.along.1 * depth,
+            across: (self.across.0 + self.across.1 * depth).length_squared(),
         }
     }
 }
@@ -804,6 +895,90 @@ mod tests {
             assert!(
                 (want - got).abs() < 1e-8,
                 "{algebra:?} {function:?}: {want} {got}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_plane_orbit_follows_the_orbit_in_four_dimensions() {
+        // Squares and cubes, with a parameter whose vector part is zero too: the orbit
+        // followed in its plane escapes at the same step, with the same norm but for
+        // rounding, as the one stepped in four coordinates.
+        let cases = [
+            (DVec4::new(-0.083, 0.0, -0.83, -0.025), JuliaFunction::Sqr),
+            (DVec4::new(-0.2, 0.6, 0.2, 0.2), JuliaFunction::Cube),
+            (DVec4::new(-0.75, 0.0, 0.0, 0.0), JuliaFunction::Sqr),
+        ];
+        for (parameter, function) in cases {
+            let julia = Julia::new(
+                parameter,
+                JuliaAlgebra::Quaternion,
+                function,
+                12,
+                50.0,
+                DVec4::new(0.0, 0.0, 0.0, 1.0),
+                0.0,
+            );
+            for k in 0..400 {
+                let t = f64::from(k);
+                let h = 1.2
+                    * DVec4::new(
+                        (0.7 * t).sin(),
+                        (1.3 * t).cos(),
+                        (2.1 * t).sin(),
+                        (0.3 * t).cos(),
+                    );
+                let got = if function == JuliaFunction::Cube {
+                    julia.orbit::<QUATERNION_CUBE, false>(h)
+                } else {
+                    julia.orbit::<QUATERNION_SQUARE, false>(h)
+                };
+                let (mut q, mut peak) = (h, 0.0_f64);
+                let mut escaped = false;
+                for _ in 0..julia.iterations {
+                    peak = peak.max(q.length_squared());
+                    if q.length_squared() > julia.exit {
+                        escaped = true;
+                        break;
+                    }
+                    q = julia.step(q);
+                }
+                let want = if escaped { q.length_squared() } else { peak } - julia.exit;
+                assert_eq!(got.inside, !escaped, "{function:?} {h}");
+                assert!(
+                    (got.value - want).abs() <= 1e-9 * (1.0 + want.abs()),
+                    "{function:?} {h}: {} {want}",
+                    got.value
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn a_plane_line_is_the_ray_lifted_into_the_plane() {
+        let julia = Julia::new(
+            DVec4::new(-0.083, 0.3, -0.83, -0.025),
+            JuliaAlgebra::Quaternion,
+            JuliaFunction::Sqr,
+            8,
+            50.0,
+            DVec4::new(0.2, -0.1, 0.3, 0.9),
+            0.15,
+        );
+        let (origin, dir) = (
+            DVec3::new(0.3, -1.0, -2.5),
+            DVec3::new(0.1, 0.4, 1.0).normalize(),
+        );
+        let line = PlaneLine::new(&julia, origin, dir);
+        for depth in [0.0, 0.7, 2.2, 4.0] {
+            let got = line.at(depth);
+            let want = julia.plane_point(julia.lift(origin + dir * depth));
+            let close = |a: f64, b: f64| (a - b).abs() < 1e-12;
+            assert!(
+                close(got.real, want.real)
+                    && close(got.along, want.along)
+                    && close(got.across, want.across),
+                "{depth}: {got:?} {want:?}"
             );
         }
     }
