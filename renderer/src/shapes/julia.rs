@@ -194,8 +194,11 @@ impl Julia {
                 let dist = ln(norm) / (product.sqrt() * scale * power);
                 return Orbit::escaped(value, dist, stretch);
             }
-            if !DISTANCE {
-                peak = max(peak, norm);
+            // The peak starts at zero and takes no NaN (no NaN is larger), so a plain
+            // comparison keeps it, without `max`'s test of the peak for NaN: a refinement
+            // runs its orbits to the end, and this is two of the step's instructions.
+            if !DISTANCE && norm > peak {
+                peak = norm;
             }
             product *= norm;
             scale *= power;
