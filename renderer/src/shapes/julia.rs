@@ -117,20 +117,17 @@ impl Julia {
         }
     }
 
-    /// The march's orbit at `depth` along the unit vector `dir` from `origin`, whose
-    /// points in the orbit plane are `line`'s.
+    /// [`Julia::orbit`] of the point at `depth` along `line`.
     #[inline(always)]
-    fn orbit_on<const KIND: u8>(
+    fn orbit_on<const KIND: u8, const DISTANCE: bool>(
         &self,
         line: &PlaneLine,
-        origin: DVec3,
-        dir: DVec3,
         depth: f64,
     ) -> Orbit {
         match KIND {
-            QUATERNION_CUBE => self.quaternion_orbit::<true>(line.at(depth), 3.0),
-            QUATERNION_SQUARE => self.quaternion_orbit::<true>(line.at(depth), 2.0),
-            _ => self.hypercomplex_orbit::<true>(self.lift(origin + dir * depth)),
+            QUATERNION_CUBE => self.quaternion_orbit::<DISTANCE>(line.at(depth), 3.0),
+            QUATERNION_SQUARE => self.quaternion_orbit::<DISTANCE>(line.at(depth), 2.0),
+            _ => self.hypercomplex_orbit::<DISTANCE>(self.lift(line.origin + line.dir * depth)),
         }
     }
 
@@ -328,14 +325,14 @@ impl Julia {
         let (mut depth, end) = span;
         // Each orbit starts afresh from its depth, the point of the ray no sum of steps.
         let line = PlaneLine::new(self, origin, dir);
-        let mut here = self.orbit_on::<KIND>(&line, origin, dir, depth);
+        let mut here = self.orbit_on::<KIND, true>(&line, depth);
         if here.inside {
             // A ray starting inside (a shadow ray from the surface) moves off first.
             depth += 2.0 * TOLERANCE;
             if depth > end {
                 return 0;
             }
-            here = self.orbit_on::<KIND>(&line, origin, dir, depth);
+            here = self.orbit_on::<KIND, true>(&line, depth);
         }
         let mut found = 0;
         'march: while depth < end && found < out.len() {
@@ -347,13 +344,13 @@ impl Julia {
                 if depth > end {
                     break 'march;
                 }
-                let next = self.orbit_on::<KIND>(&line, origin, dir, depth);
+                let next = self.orbit_on::<KIND, true>(&line, depth);
                 if next.inside != here.inside {
                     break (before, step, next);
                 }
                 here = next;
             };
-            depth = before + self.refine::<KIND>(origin + dir * before, dir, step, &here, &next);
+            depth = before + self.refine::<KIND>(&line, before, step, &here, &next);
             if depth > end {
                 break;
             }
@@ -367,8 +364,9 @@ impl Julia {
         found
     }
 
-    /// Where the boundary crosses the step from `start` (whose orbit was `from`) to
-    /// `start + dir·step` (whose orbit was `to`, on the other side): the offset of the
+    /// Where the boundary crosses the step along `line` from the depth `start` (whose
+    /// orbit was `from`) to `start + step` (whose orbit was `to`, on the other side),
+    /// each orbit started from its depth as the march's are: the offset of the
     /// inside end of the cell of the grid, the step halved down to the tolerance, that
     /// halving finds. Halving is what POV-Ray does, and where the boundary crosses the
     /// bracket many times (a fractal of many iterations) its choice shows. But once the
@@ -380,8 +378,8 @@ impl Julia {
     /// should two trials fail to halve the bracket, the next halves it.
     fn refine<const KIND: u8>(
         &self,
-        start: DVec3,
-        dir: DVec3,
+        line: &PlaneLine,
+        start: f64,
         step: f64,
         from: &Orbit,
         to: &Orbit,
@@ -403,7 +401,7 @@ impl Julia {
             let trial = if straight && width < earlier / 2 {
                 // An end the march left without its value gets it now.
                 let value_at = |at: u64| {
-                    self.orbit::<KIND, false>(self.lift(start + dir * (at as f64 * cell)))
+                    self.orbit_on::<KIND, false>(line, start + at as f64 * cell)
                         .value
                 };
                 if fa.is_nan() {
@@ -419,8 +417,7 @@ impl Julia {
                 a + width / 2
             };
             (earlier, last) = (last, width);
-            let point = start + dir * (trial as f64 * cell);
-            let orbit = self.orbit::<KIND, false>(self.lift(point));
+            let orbit = self.orbit_on::<KIND, false>(line, start + trial as f64 * cell);
             if orbit.inside == from.inside {
                 (a, fa, sa) = (trial, orbit.value, orbit.stretch);
                 if kept_a == Some(false) {
@@ -593,10 +590,13 @@ struct PlanePoint {
     across: f64,
 }
 
-/// A ray through the slice in the coordinates of [`PlanePoint`]: the real part and the
-/// along component are linear in the depth, and the across component is the squared
-/// length of a vector that is, the cross product of the vector part with the axis.
+/// A ray through the slice from `origin` along the unit vector `dir`, and its points in
+/// the coordinates of [`PlanePoint`]: the real part and the along component are linear in
+/// the depth, and the across component is the squared length of a vector that is, the
+/// cross product of the vector part with the axis.
 struct PlaneLine {
+    origin: DVec3,
+    dir: DVec3,
     real: (f64, f64),
     along: (f64, f64),
     across: (DVec3, DVec3),
@@ -613,6 +613,8 @@ impl PlaneLine {
             DVec3::new(dir.y, dir.z, tilt),
         );
         PlaneLine {
+            origin,
+            dir,
             real: (start.x, dir.x),
             along: (v.dot(julia.axis), dv.dot(julia.axis)),
             across: (v.cross(julia.axis), dv.cross(julia.axis)),
@@ -1010,13 +1012,23 @@ mod tests {
         }
     }
 
-    /// Where halving the march's step down to the tolerance, as POV-Ray does, puts the
-    /// crossing: the inside end of the last cell.
-    fn halving(julia: &Julia, start: DVec3, dir: DVec3, step: f64, inside: bool) -> f64 {
+    /// Where halving the march's step from the depth `start` along `line` down to the
+    /// tolerance, as POV-Ray does, puts the crossing: the inside end of the last cell.
+    fn halving<const KIND: u8>(
+        julia: &Julia,
+        line: &PlaneLine,
+        start: f64,
+        step: f64,
+        inside: bool,
+    ) -> f64 {
         let (mut depth, mut dist) = (0.0, step);
         while dist > TOLERANCE {
             dist *= 0.5;
-            if julia.inside_point(start + dir * (depth + dist)) == inside {
+            if julia
+                .orbit_on::<KIND, false>(line, start + (depth + dist))
+                .inside
+                == inside
+            {
                 depth += dist;
             }
         }
@@ -1051,15 +1063,15 @@ mod tests {
         for k in 0..400 {
             let (x, y) = (-1.0 + 0.005 * f64::from(k), 0.3 - 0.0015 * f64::from(k));
             let dir = DVec3::new(0.05, -0.02, 1.0).normalize();
-            let mut start = DVec3::new(x, y, -2.0);
-            let mut here = julia.orbit::<KIND, true>(julia.lift(start));
+            let line = PlaneLine::new(julia, DVec3::new(x, y, -2.0), dir);
+            let mut start = 0.0;
+            let mut here = julia.orbit_on::<KIND, true>(&line, start);
             for _ in 0..400 {
                 let step = max(here.dist, julia.min_step);
-                let next_point = start + dir * step;
-                let next = julia.orbit::<KIND, true>(julia.lift(next_point));
+                let next = julia.orbit_on::<KIND, true>(&line, start + step);
                 if next.inside != here.inside {
-                    let want = halving(julia, start, dir, step, here.inside);
-                    let got = julia.refine::<KIND>(start, dir, step, &here, &next);
+                    let want = halving::<KIND>(julia, &line, start, step, here.inside);
+                    let got = julia.refine::<KIND>(&line, start, step, &here, &next);
                     assert!(
                         (got - want).abs() <= 1e-12,
                         "{} iterations, ray {k}: {got} {want}",
@@ -1067,7 +1079,7 @@ mod tests {
                     );
                     refined += 1;
                 }
-                (start, here) = (next_point, next);
+                (start, here) = (start + step, next);
             }
         }
         refined
