@@ -707,6 +707,7 @@ impl Builder {
                     Shape::Plane(Plane {
                         normal: n,
                         distance: *distance,
+                        world_normal: DVec3::ZERO,
                     }),
                     DAffine3::IDENTITY,
                 )
@@ -723,6 +724,7 @@ impl Builder {
                     Shape::Disc(Disc {
                         radius: radius.abs(),
                         hole: hole_radius.abs(),
+                        world_normal: DVec3::ZERO,
                     }),
                     frame,
                 )

@@ -12,7 +12,7 @@ use crate::interior::Interior;
 use crate::material::{Layer, Material, transmitted_through};
 use crate::photons::SurfacePhotons;
 use crate::ray::{Ray, RayKind};
-use crate::shapes::{Root, Roots, Shape, Span};
+use crate::shapes::{Disc, Plane, Root, Roots, Shape, Span};
 use crate::texture_point::TexturePoint;
 use analysis::pattern::Facing;
 use analysis::scene::LightPhotons;
@@ -61,7 +61,8 @@ pub struct Leaf {
     pub shape: Shape,
     /// World to the canonical frame; `None` for the identity, the common case of planes.
     /// Normals go back to the world by its transposed linear part. A scene may hold a
-    /// hundred thousand leaves, so nothing derived from it is stored beside it.
+    /// hundred thousand leaves, so nothing derived from it is stored beside it (but a
+    /// plane's or a disc's normal in the world, in room its shape leaves in the enum).
     to_local: Option<DAffine3>,
     pub inverse: bool,
     pub material: Arc<Material>,
@@ -135,14 +136,16 @@ impl Leaf {
     ) -> Leaf {
         let identity = to_world == DAffine3::IDENTITY;
         let to_local = to_world.inverse();
-        let shape = match shape {
+        let mut shape = match shape {
             Shape::Torus(torus) if !identity => Shape::Torus(torus.placed(&to_world)),
             shape => shape,
         };
         let bounds = shape.world_bounds(&to_world);
+        let to_local = (!identity).then_some(to_local);
+        keep_world_normal(&mut shape, to_local.as_ref());
         Leaf {
             shape,
-            to_local: (!identity).then_some(to_local),
+            to_local,
             inverse,
             transmits: material.transmits,
             uses_uv: material.uses_uv,
@@ -372,20 +375,31 @@ impl Leaf {
             .first_hit(&self.local_ray(&q.ray), q.tmin, q.tmax)
     }
 
-    /// The unit outward normal in the world at a point of this leaf's surface.
+    /// The unit outward normal in the world at a point of this leaf's surface. Inlined for
+    /// planes and discs, whose normal their shape keeps: rays meet and leave them at every
+    /// sample of a floor or a water surface, and a call costs the interpreted plugin a
+    /// frame.
+    #[inline]
     pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
-        let n = self.shape.normal(self.local_point(p), part);
-        let n = if let Some(m) = &self.to_local {
-            // The transposed linear part times n: each column's dot product with n.
-            DVec3::new(
-                m.matrix3.x_axis.dot(n),
-                m.matrix3.y_axis.dot(n),
-                m.matrix3.z_axis.dot(n),
-            )
-        } else {
-            n
+        let kept = match &self.shape {
+            Shape::Plane(Plane { world_normal, .. }) | Shape::Disc(Disc { world_normal, .. }) => {
+                *world_normal
+            }
+            _ => DVec3::ZERO,
         };
-        let n = n.normalize_or_zero();
+        if kept == DVec3::ZERO {
+            return self.transformed_normal(p, part);
+        }
+        if self.inverse { -kept } else { kept }
+    }
+
+    /// [`Leaf::normal`] from the shape's normal at the point, carried into the world.
+    #[inline(never)]
+    fn transformed_normal(&self, p: DVec3, part: u32) -> DVec3 {
+        let n = world_normal_of(
+            self.to_local.as_ref(),
+            self.shape.normal(self.local_point(p), part),
+        );
         if n == DVec3::ZERO {
             // A degenerate spot (a cone's apex): any direction facing the ray will do
             // once the shader turns it; never NaN.
@@ -412,6 +426,37 @@ impl Leaf {
         self.shape.intersect(&self.local_ray(ray), &mut roots);
         roots
     }
+}
+
+/// Works out a plane's or a disc's normal in the world once, into the shape: it is the
+/// same at each of its points, each ray that meets or leaves one asks for it, and its
+/// transformation costs a dozen operations and a square root.
+fn keep_world_normal(shape: &mut Shape, to_local: Option<&DAffine3>) {
+    if !matches!(shape, Shape::Plane(_) | Shape::Disc(_)) {
+        return;
+    }
+    let n = world_normal_of(to_local, shape.normal(DVec3::ZERO, 0));
+    if let Shape::Plane(Plane { world_normal, .. }) | Shape::Disc(Disc { world_normal, .. }) = shape
+    {
+        *world_normal = n;
+    }
+}
+
+/// The unit normal in the world of a shape's normal `n` in its canonical frame, which
+/// `to_local` (`None` for the identity) maps the world to; zero where the frame flattens
+/// it.
+fn world_normal_of(to_local: Option<&DAffine3>, n: DVec3) -> DVec3 {
+    let n = if let Some(m) = to_local {
+        // The transposed linear part times n: each column's dot product with n.
+        DVec3::new(
+            m.matrix3.x_axis.dot(n),
+            m.matrix3.y_axis.dot(n),
+            m.matrix3.z_axis.dot(n),
+        )
+    } else {
+        n
+    };
+    n.normalize_or_zero()
 }
 
 /// A node of the object tree. Leaves are kept inline although they are larger than CSG

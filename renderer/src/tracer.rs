@@ -147,10 +147,6 @@ pub struct Tracer<'w> {
     /// is not tried again when it is that surface, which shadows its own points rarely if
     /// at all (a disc or plane never) while its neighbours' shadow rays keep meeting it.
     shadow_surface: Option<&'w Leaf>,
-    /// The last flat surface with an open side (see [`crate::open_sides`]) a ray left,
-    /// with its normal: rays leave one surface again and again, and its normal costs a
-    /// transformation.
-    open_surface: Option<(&'w Leaf, DVec3)>,
     /// The shadow samples of an area light's grid for the current point, kept between
     /// points to spare an allocation each time.
     area_samples: Vec<Option<DVec3>>,
@@ -183,7 +179,6 @@ impl<'w> Tracer<'w> {
             gather_scratch: GatherScratch::default(),
             last_blocker: None,
             shadow_surface: None,
-            open_surface: None,
             area_samples: Vec::new(),
             shadow_start: Vec::new(),
             radiosity: world
@@ -661,20 +656,15 @@ impl<'w> Tracer<'w> {
 
     /// Whether a ray leaving a point of the surface of `leaf` along `direction` meets
     /// nothing: the leaf is flat and the ray goes into a side of its plane that no other
-    /// object reaches.
-    fn leads_nowhere(&mut self, leaf: &'w Leaf, direction: DVec3) -> bool {
+    /// object reaches. Inlined: shadow rays and the rays leaving a surface ask at every
+    /// point of a flat one, and a call costs the interpreted plugin a frame.
+    #[inline]
+    fn leads_nowhere(&self, leaf: &Leaf, direction: DVec3) -> bool {
         if leaf.open_sides == OpenSides::NONE {
             return false;
         }
-        let normal = match self.open_surface {
-            Some((surface, normal)) if std::ptr::eq(surface, leaf) => normal,
-            _ => {
-                let normal = leaf.normal(DVec3::ZERO, 0);
-                self.open_surface = Some((leaf, normal));
-                normal
-            }
-        };
-        leaf.open_sides.towards(normal.dot(direction))
+        leaf.open_sides
+            .towards(leaf.normal(DVec3::ZERO, 0).dot(direction))
     }
 
     /// Diffuse light and highlights from light arriving unshadowed, from a light source or

@@ -9,6 +9,9 @@ use glam::DVec3;
 pub struct Disc {
     pub radius: f64,
     pub hole: f64,
+    /// The unit normal in the world, which the leaf placing the shape works out once
+    /// (see `Leaf::new`); zero until then, or where its frame flattens the shape.
+    pub world_normal: DVec3,
 }
 
 impl Disc {
@@ -50,6 +53,7 @@ mod tests {
         let disc = Disc {
             radius: 2.0,
             hole: 0.5,
+            world_normal: DVec3::ZERO,
         };
         let rays = [
             Ray::new(DVec3::new(1.0, 0.0, 3.0), DVec3::NEG_Z),

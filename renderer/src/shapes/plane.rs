@@ -10,6 +10,9 @@ pub struct Plane {
     /// Unit length.
     pub normal: DVec3,
     pub distance: f64,
+    /// The unit normal in the world, which the leaf placing the shape works out once
+    /// (see `Leaf::new`); zero until then, or where its frame flattens the shape.
+    pub world_normal: DVec3,
 }
 
 impl Plane {

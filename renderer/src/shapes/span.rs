@@ -143,6 +143,7 @@ mod tests {
             Shape::Plane(Plane {
                 normal: DVec3::new(0.6, 0.0, 0.8),
                 distance: 0.3,
+                world_normal: DVec3::ZERO,
             }),
         ];
         let mut rays = 0;
@@ -201,6 +202,7 @@ mod tests {
         let plane = Shape::Plane(Plane {
             normal: DVec3::Y,
             distance: 0.0,
+            world_normal: DVec3::ZERO,
         });
         let below = Ray::new(DVec3::new(0.0, -1.0, 0.0), DVec3::X);
         let above = Ray::new(DVec3::new(0.0, 1.0, 0.0), DVec3::X);
