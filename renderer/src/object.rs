@@ -338,41 +338,48 @@ impl Leaf {
             && (!self.transmits
                 || photons_stop.is_some_and(|light| self.photons.stops_light_for_photons(light)))
             && self.visibility.sees(q.kind)
-            && self.first_hit(q).is_some()
+            && self.first_hit(&q.ray, q.tmin, q.tmax).is_some()
     }
 
     /// The nearest crossing inside the query's interval that rays of the query's kind
     /// see. Inlined, as [`Leaf::first_hit`] is.
     #[inline(always)]
     pub fn nearest(&self, q: &Query) -> Option<Hit<'_>> {
+        self.nearest_in(q, q.tmin, q.tmax)
+    }
+
+    /// [`Leaf::nearest`] inside `(tmin, tmax)` instead of the query's interval: the
+    /// searches that narrow the interval keep its ends apart, since narrowing a copy of
+    /// the query cost them a memory copy or a dozen loads and stores in WebAssembly.
+    #[inline(always)]
+    pub fn nearest_in(&self, q: &Query, tmin: f64, tmax: f64) -> Option<Hit<'_>> {
         if !self.visibility.sees(q.kind) {
             return None;
         }
-        self.first_hit(q).map(|r| Hit {
+        self.first_hit(&q.ray, tmin, tmax).map(|r| Hit {
             t: r.t,
             leaf: self,
             part: r.part,
         })
     }
 
-    /// The nearest crossing inside the query's interval. Inlined into the searches, which
-    /// call it for every leaf a ray reaches: a call costs the interpreted plugin as much as
-    /// a box test.
+    /// The nearest crossing of `ray` inside `(tmin, tmax)`. Inlined into the searches,
+    /// which call it for every leaf a ray reaches: a call costs the interpreted plugin as
+    /// much as a box test.
     #[inline(always)]
-    fn first_hit(&self, q: &Query) -> Option<crate::shapes::Root> {
-        // Without a transformation the shape is asked along the query's own ray: a copy
-        // of it, as `local_ray` gives, cost every search of such a leaf in WebAssembly a
+    fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<crate::shapes::Root> {
+        // Without a transformation the shape is asked along the ray itself: a copy of
+        // it, as `local_ray` gives, cost every search of such a leaf in WebAssembly a
         // dozen loads and stores.
         let Some(to_local) = &self.to_local else {
-            return self.shape.first_hit(&q.ray, q.tmin, q.tmax);
+            return self.shape.first_hit(ray, tmin, tmax);
         };
         if let Shape::Torus(torus) = &self.shape
-            && !torus.may_meet(to_local, &q.ray, q.tmin, q.tmax)
+            && !torus.may_meet(to_local, ray, tmin, tmax)
         {
             return None;
         }
-        self.shape
-            .first_hit(&self.local_ray(&q.ray), q.tmin, q.tmax)
+        self.shape.first_hit(&self.local_ray(ray), tmin, tmax)
     }
 
     /// The unit outward normal in the world at a point of this leaf's surface. Inlined for
@@ -890,12 +897,10 @@ impl Csg {
                 narrow_to_stretch(clip, q, &mut lo, &mut hi)?;
             }
         }
-        let mut within = *q;
-        within.tmin = fast_math::max(within.tmin, lo);
-        within.tmax = fast_math::min(within.tmax, hi);
+        let (tmin, tmax) = (fast_math::max(q.tmin, lo), fast_math::min(q.tmax, hi));
         match &self.children[0] {
-            Object::Leaf(leaf) => leaf.nearest(&within),
-            csg => csg.nearest(&within, scratch),
+            Object::Leaf(leaf) => leaf.nearest_in(q, tmin, tmax),
+            csg => csg.nearest(&Query { tmin, tmax, ..*q }, scratch),
         }
     }
 

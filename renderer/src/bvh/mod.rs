@@ -145,19 +145,19 @@ impl Bvh {
         scratch: &mut Vec<Hit<'a>>,
         cell: &vista::Cell<'_>,
     ) -> Option<Hit<'a>> {
-        let mut q = *q;
+        let mut tmax = q.tmax;
         let mut best = None;
         for object in &self.unbounded {
-            if let Some(hit) = nearest_of(object, &q, scratch) {
-                take(&mut best, hit, &mut q, false);
+            if let Some(hit) = nearest_of(object, q, tmax, scratch) {
+                take(&mut best, hit, &mut tmax, false);
             }
         }
         for entry in cell.entries {
-            if entry.depth >= cell.origin_depth + q.tmax * cell.depth_per_t {
+            if entry.depth >= cell.origin_depth + tmax * cell.depth_per_t {
                 break;
             }
-            if let Some(hit) = nearest_of(&self.objects[entry.index as usize], &q, scratch) {
-                take(&mut best, hit, &mut q, false);
+            if let Some(hit) = nearest_of(&self.objects[entry.index as usize], q, tmax, scratch) {
+                take(&mut best, hit, &mut tmax, false);
             }
         }
         best
@@ -180,32 +180,31 @@ impl Bvh {
         scratch: &mut Vec<Hit<'a>>,
         opaque_ends: bool,
     ) -> Option<Hit<'a>> {
-        let mut q = *q;
+        let mut tmax = q.tmax;
         let mut best = None;
         for object in &self.unbounded {
-            if let Some(hit) = nearest_of(object, &q, scratch)
-                && take(&mut best, hit, &mut q, opaque_ends)
+            if let Some(hit) = nearest_of(object, q, tmax, scratch)
+                && take(&mut best, hit, &mut tmax, opaque_ends)
             {
                 return best;
             }
         }
-        let ray = q.ray;
         self.tree.traverse(
-            &ray,
+            &q.ray,
             q.inv_dir,
             q.tmin,
-            q.tmax,
+            tmax,
             q.kind.bit(),
-            |range, tmax| {
-                q.tmax = tmax;
+            |range, end| {
+                tmax = end;
                 for object in &self.objects[range] {
-                    if let Some(hit) = nearest_of(object, &q, scratch)
-                        && take(&mut best, hit, &mut q, opaque_ends)
+                    if let Some(hit) = nearest_of(object, q, tmax, scratch)
+                        && take(&mut best, hit, &mut tmax, opaque_ends)
                     {
                         return f64::NEG_INFINITY;
                     }
                 }
-                q.tmax
+                tmax
             },
         );
         best
@@ -246,22 +245,42 @@ fn reach(bounded: Aabb, unbounded: &[Object]) -> Aabb {
     reach
 }
 
-/// [`Object::nearest`], with a leaf, most objects, tested here without a call: the call's
-/// frame, sized for CSG nodes, costs the interpreted plugin more than a leaf's own test. A
-/// clip by convex shapes goes to its own search directly, for the same reason.
+/// [`Object::nearest`] inside the query's interval ended at `tmax` (the searches keep
+/// the end they narrow apart from the query, which they do not copy), with a leaf, most
+/// objects, tested here without a call: the call's frame, sized for CSG nodes, costs the
+/// interpreted plugin more than a leaf's own test. A clip by convex shapes goes to its
+/// own search directly, for the same reason. A CSG node's search takes the query itself
+/// while its end is not narrowed, as for the first object a ray meets, and a narrowed
+/// copy only after that.
 #[inline(always)]
-fn nearest_of<'a>(object: &'a Object, q: &Query, scratch: &mut Vec<Hit<'a>>) -> Option<Hit<'a>> {
-    match object {
-        Object::Leaf(leaf) => leaf.nearest(q),
-        Object::Csg(csg) if csg.convex_clip => csg.nearest_clipped(q, scratch),
-        csg => csg.nearest(q, scratch),
+fn nearest_of<'a>(
+    object: &'a Object,
+    q: &Query,
+    tmax: f64,
+    scratch: &mut Vec<Hit<'a>>,
+) -> Option<Hit<'a>> {
+    let csg = match object {
+        Object::Leaf(leaf) => return leaf.nearest_in(q, q.tmin, tmax),
+        Object::Csg(csg) => csg,
+    };
+    let narrowed;
+    let q = if tmax == q.tmax {
+        q
+    } else {
+        narrowed = Query { tmax, ..*q };
+        &narrowed
+    };
+    if csg.convex_clip {
+        csg.nearest_clipped(q, scratch)
+    } else {
+        object.nearest(q, scratch)
     }
 }
 
-/// Keeps `hit` in `best` if it is nearer, narrowing the query to it unless `opaque_ends`;
-/// `true` when the search ends with it.
+/// Keeps `hit` in `best` if it is nearer, narrowing the interval's end `tmax` to it
+/// unless `opaque_ends`; `true` when the search ends with it.
 #[inline]
-fn take<'a>(best: &mut Option<Hit<'a>>, hit: Hit<'a>, q: &mut Query, opaque_ends: bool) -> bool {
+fn take<'a>(best: &mut Option<Hit<'a>>, hit: Hit<'a>, tmax: &mut f64, opaque_ends: bool) -> bool {
     if opaque_ends && !hit.leaf.transmits {
         *best = Some(hit);
         return true;
@@ -269,7 +288,7 @@ fn take<'a>(best: &mut Option<Hit<'a>>, hit: Hit<'a>, q: &mut Query, opaque_ends
     if best.is_none_or(|b| hit.t < b.t) {
         *best = Some(hit);
         if !opaque_ends {
-            q.tmax = hit.t;
+            *tmax = hit.t;
         }
     }
     false
