@@ -703,14 +703,7 @@ impl Builder {
                 if n == DVec3::ZERO {
                     return Err(fail("degenerate plane: the normal is zero".into()));
                 }
-                (
-                    Shape::Plane(Plane {
-                        normal: n,
-                        distance: *distance,
-                        world_normal: DVec3::ZERO,
-                    }),
-                    DAffine3::IDENTITY,
-                )
+                (Shape::Plane(Plane::new(n, *distance)), DAffine3::IDENTITY)
             }
             scene::Shape::Disc {
                 center,
@@ -721,11 +714,7 @@ impl Builder {
                 let frame = axis_frame(*center, *center + normal.normalize_or_zero(), 1.0)
                     .ok_or_else(|| fail("degenerate disc: the normal is zero".into()))?;
                 (
-                    Shape::Disc(Disc {
-                        radius: radius.abs(),
-                        hole: hole_radius.abs(),
-                        world_normal: DVec3::ZERO,
-                    }),
+                    Shape::Disc(Disc::new(radius.abs(), hole_radius.abs())),
                     frame,
                 )
             }

@@ -12,7 +12,7 @@ use crate::interior::Interior;
 use crate::material::{Layer, Material, transmitted_through};
 use crate::photons::SurfacePhotons;
 use crate::ray::{Ray, RayKind};
-use crate::shapes::{Disc, Plane, Root, Roots, Shape, Span};
+use crate::shapes::{Root, Roots, Shape, Span};
 use crate::texture_point::TexturePoint;
 use analysis::pattern::Facing;
 use analysis::scene::LightPhotons;
@@ -61,8 +61,9 @@ pub struct Leaf {
     pub shape: Shape,
     /// World to the canonical frame; `None` for the identity, the common case of planes.
     /// Normals go back to the world by its transposed linear part. A scene may hold a
-    /// hundred thousand leaves, so nothing derived from it is stored beside it (but a
-    /// plane's or a disc's normal in the world, in room its shape leaves in the enum).
+    /// hundred thousand leaves, so nothing derived from it is stored beside it, except a
+    /// plane's or a disc's normal in the world, which fits in the room the `Shape` enum
+    /// has spare for those shapes.
     to_local: Option<DAffine3>,
     pub inverse: bool,
     pub material: Arc<Material>,
@@ -389,9 +390,8 @@ impl Leaf {
     #[inline]
     pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
         let kept = match &self.shape {
-            Shape::Plane(Plane { world_normal, .. }) | Shape::Disc(Disc { world_normal, .. }) => {
-                *world_normal
-            }
+            Shape::Plane(plane) => plane.world_normal(),
+            Shape::Disc(disc) => disc.world_normal(),
             _ => DVec3::ZERO,
         };
         if kept == DVec3::ZERO {
@@ -439,13 +439,10 @@ impl Leaf {
 /// same at each of its points, each ray that meets or leaves one asks for it, and its
 /// transformation costs a dozen operations and a square root.
 fn keep_world_normal(shape: &mut Shape, to_local: Option<&DAffine3>) {
-    if !matches!(shape, Shape::Plane(_) | Shape::Disc(_)) {
-        return;
-    }
-    let n = world_normal_of(to_local, shape.normal(DVec3::ZERO, 0));
-    if let Shape::Plane(Plane { world_normal, .. }) | Shape::Disc(Disc { world_normal, .. }) = shape
-    {
-        *world_normal = n;
+    match shape {
+        Shape::Plane(plane) => plane.place(world_normal_of(to_local, plane.normal)),
+        Shape::Disc(disc) => disc.place(world_normal_of(to_local, DVec3::Z)),
+        _ => {}
     }
 }
 

@@ -10,11 +10,30 @@ pub struct Disc {
     pub radius: f64,
     pub hole: f64,
     /// The unit normal in the world, which the leaf placing the shape works out once
-    /// (see `Leaf::new`); zero until then, or where its frame flattens the shape.
-    pub world_normal: DVec3,
+    /// (`Leaf::new`, through [`Disc::place`]); zero until then, or where its frame
+    /// flattens the shape.
+    world_normal: DVec3,
 }
 
 impl Disc {
+    pub fn new(radius: f64, hole: f64) -> Disc {
+        Disc {
+            radius,
+            hole,
+            world_normal: DVec3::ZERO,
+        }
+    }
+
+    /// The unit normal in the world that [`Disc::place`] kept, or zero.
+    pub fn world_normal(&self) -> DVec3 {
+        self.world_normal
+    }
+
+    /// Keeps the unit normal in the world of the leaf that places the shape.
+    pub fn place(&mut self, world_normal: DVec3) {
+        self.world_normal = world_normal;
+    }
+
     pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
         if let Some(t) = self.crossing(ray) {
             roots.push(t, 0);
@@ -50,11 +69,7 @@ mod tests {
     /// The direct test finds what the list of crossings finds, in the interval or not.
     #[test]
     fn first_hit_is_the_crossing_in_the_interval() {
-        let disc = Disc {
-            radius: 2.0,
-            hole: 0.5,
-            world_normal: DVec3::ZERO,
-        };
+        let disc = Disc::new(2.0, 0.5);
         let rays = [
             Ray::new(DVec3::new(1.0, 0.0, 3.0), DVec3::NEG_Z),
             Ray::new(DVec3::new(0.0, 0.0, 3.0), DVec3::NEG_Z),

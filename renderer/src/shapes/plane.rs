@@ -11,11 +11,30 @@ pub struct Plane {
     pub normal: DVec3,
     pub distance: f64,
     /// The unit normal in the world, which the leaf placing the shape works out once
-    /// (see `Leaf::new`); zero until then, or where its frame flattens the shape.
-    pub world_normal: DVec3,
+    /// (`Leaf::new`, through [`Plane::place`]); zero until then, or where its frame
+    /// flattens the shape.
+    world_normal: DVec3,
 }
 
 impl Plane {
+    pub fn new(normal: DVec3, distance: f64) -> Plane {
+        Plane {
+            normal,
+            distance,
+            world_normal: DVec3::ZERO,
+        }
+    }
+
+    /// The unit normal in the world that [`Plane::place`] kept, or zero.
+    pub fn world_normal(&self) -> DVec3 {
+        self.world_normal
+    }
+
+    /// Keeps the unit normal in the world of the leaf that places the shape.
+    pub fn place(&mut self, world_normal: DVec3) {
+        self.world_normal = world_normal;
+    }
+
     pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
         if let Some(t) = self.crossing(ray) {
             roots.push(t, 0);

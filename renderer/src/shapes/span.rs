@@ -140,11 +140,7 @@ mod tests {
                 cap_radius: 0.25,
                 open: false,
             }),
-            Shape::Plane(Plane {
-                normal: DVec3::new(0.6, 0.0, 0.8),
-                distance: 0.3,
-                world_normal: DVec3::ZERO,
-            }),
+            Shape::Plane(Plane::new(DVec3::new(0.6, 0.0, 0.8), 0.3)),
         ];
         let mut rays = 0;
         for shape in &shapes {
@@ -199,11 +195,7 @@ mod tests {
 
     #[test]
     fn a_ray_along_a_plane_is_inside_below_it_and_outside_above() {
-        let plane = Shape::Plane(Plane {
-            normal: DVec3::Y,
-            distance: 0.0,
-            world_normal: DVec3::ZERO,
-        });
+        let plane = Shape::Plane(Plane::new(DVec3::Y, 0.0));
         let below = Ray::new(DVec3::new(0.0, -1.0, 0.0), DVec3::X);
         let above = Ray::new(DVec3::new(0.0, 1.0, 0.0), DVec3::X);
         assert_eq!(plane.convex_span(&below), Some(Span::EVERYWHERE));
