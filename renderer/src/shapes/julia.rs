@@ -24,6 +24,10 @@ pub struct Julia {
     pub iterations: u32,
     /// The shortest march step: 1/precision.
     pub min_step: f64,
+    /// (min_step · n)² (1 - 1e-9) for quaternion powers n: what a distance estimate's
+    /// terms are compared with to show it shorter than the shortest step (see
+    /// [`Julia::quaternion_orbit`]).
+    pub short_bound: f64,
     pub slice: DVec4,
     pub slice_distance: f64,
     /// The bounding sphere's radius, and the squared norm past which an orbit escapes.
@@ -54,6 +58,7 @@ impl Julia {
             }
             JuliaAlgebra::Hypercomplex => (4.0, 16.0),
         };
+        let min_step = 1.0 / precision.max(1.0);
         let vector = DVec3::new(parameter.y, parameter.z, parameter.w);
         let axial = vector.length();
         let axis = if axial > 0.0 {
@@ -66,7 +71,15 @@ impl Julia {
             algebra,
             function,
             iterations: max_iteration.clamp(1, MAX_ITERATIONS),
-            min_step: 1.0 / precision.max(1.0),
+            min_step,
+            short_bound: {
+                let power = if function == JuliaFunction::Cube {
+                    3.0
+                } else {
+                    2.0
+                };
+                (min_step * power) * (min_step * power) * (1.0 - 1e-9)
+            },
             slice,
             slice_distance,
             radius,
@@ -182,10 +195,15 @@ impl Julia {
                 // less than min_step, so an estimate shorter than that need not be taken:
                 // ln x ≤ (x - 1)/√x for x ≥ 1 (the escape norm is at least 1) shows it
                 // shorter without the logarithm, as it does at about four in five of the
-                // steps that are.
-                let shortest = self.min_step * scale * power;
+                // steps that are. For squares the stretch is the scale² · product this
+                // asks for.
+                let reach = if power == 2.0 {
+                    stretch
+                } else {
+                    scale * scale * product
+                };
                 let excess = norm - 1.0;
-                if excess * excess < norm * (shortest * shortest) * product * (1.0 - 1e-9) {
+                if excess * excess < norm * reach * self.short_bound {
                     return Orbit::escaped(value, 0.0, stretch);
                 }
                 let dist = ln(norm) / (product.sqrt() * scale * power);
@@ -338,7 +356,13 @@ impl Julia {
         'march: while depth < end && found < out.len() {
             // March until a step lands on the other side of the boundary.
             let (before, step, next) = loop {
-                let step = max(here.dist, self.min_step);
+                // A plain comparison, without `max`'s test for NaN: a NaN estimate
+                // compares false, and the shortest step is taken, as `max` would.
+                let step = if here.dist > self.min_step {
+                    here.dist
+                } else {
+                    self.min_step
+                };
                 let before = depth;
                 depth += step;
                 if depth > end {
