@@ -18,6 +18,7 @@ use analysis::pattern::Facing;
 use analysis::scene::LightPhotons;
 use analysis::scene::mesh::FaceTexture;
 use glam::{DAffine3, DVec3};
+use std::mem::MaybeUninit;
 use std::sync::Arc;
 
 /// Which kinds of rays see an object.
@@ -172,6 +173,17 @@ impl Leaf {
                 m.transform_vector3(ray.direction),
             ),
             None => *ray,
+        }
+    }
+
+    /// [`Leaf::local_ray`] without copying `ray` when there is no transformation (a copy
+    /// cost a dozen loads and stores in WebAssembly): `ray` itself, or the transformed ray
+    /// written into `local`.
+    #[inline(always)]
+    fn local_ray_in<'r>(&self, ray: &'r Ray, local: &'r mut MaybeUninit<Ray>) -> &'r Ray {
+        match &self.to_local {
+            Some(_) => local.write(self.local_ray(ray)),
+            None => ray,
         }
     }
 
@@ -425,12 +437,16 @@ impl Leaf {
         if !self.shape.has_convex_span() {
             return None;
         }
-        self.shape.convex_span(&self.local_ray(ray))
+        self.shape
+            .convex_span(self.local_ray_in(ray, &mut MaybeUninit::uninit()))
     }
 
     fn roots(&self, ray: &Ray) -> Roots {
         let mut roots = Roots::new();
-        self.shape.intersect(&self.local_ray(ray), &mut roots);
+        self.shape.intersect(
+            self.local_ray_in(ray, &mut MaybeUninit::uninit()),
+            &mut roots,
+        );
         roots
     }
 }
