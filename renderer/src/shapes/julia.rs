@@ -36,7 +36,7 @@ pub struct Julia {
     /// The unit vector along the parameter's vector part (any unit vector when that part
     /// is zero), and that part's length: see [`Julia::quaternion_orbit`].
     pub axis: DVec3,
-    pub axial: f64,
+    pub vector_length: f64,
 }
 
 impl Julia {
@@ -60,9 +60,9 @@ impl Julia {
         };
         let min_step = 1.0 / precision.max(1.0);
         let vector = DVec3::new(parameter.y, parameter.z, parameter.w);
-        let axial = vector.length();
-        let axis = if axial > 0.0 {
-            vector / axial
+        let vector_length = vector.length();
+        let axis = if vector_length > 0.0 {
+            vector / vector_length
         } else {
             DVec3::X
         };
@@ -85,7 +85,7 @@ impl Julia {
             radius,
             exit,
             axis,
-            axial,
+            vector_length,
         }
     }
 
@@ -171,7 +171,7 @@ impl Julia {
     /// the same but for rounding.
     #[inline(always)]
     fn quaternion_orbit<const DISTANCE: bool>(&self, start: PlanePoint, power: f64) -> Orbit {
-        let (c, axial) = (self.parameter.x, self.axial);
+        let (c, vector_length) = (self.parameter.x, self.vector_length);
         let PlanePoint {
             real: mut a,
             mut along,
@@ -219,12 +219,12 @@ impl Julia {
             scale *= power;
             if power == 2.0 {
                 across *= 4.0 * a2;
-                along = 2.0 * a * along + axial;
+                along = 2.0 * a * along + vector_length;
                 a = a2 - vector + c;
             } else {
                 let t = 3.0 * a2 - vector;
                 a = a * (a2 - 3.0 * vector) + c;
-                along = along * t + axial;
+                along = along * t + vector_length;
                 across *= t * t;
             }
         }
@@ -341,7 +341,8 @@ impl Julia {
         out: &mut [f64],
     ) -> usize {
         let (mut depth, end) = span;
-        // Each orbit starts afresh from its depth, the point of the ray no sum of steps.
+        // Each orbit starts afresh from the ray's point at its depth, not from a sum of
+        // steps.
         let line = PlaneLine::new(self, origin, dir);
         let mut here = self.orbit_on::<KIND, true>(&line, depth);
         if here.inside {
@@ -616,8 +617,8 @@ struct PlanePoint {
 
 /// A ray through the slice from `origin` along the unit vector `dir`, and its points in
 /// the coordinates of [`PlanePoint`]: the real part and the along component are linear in
-/// the depth, and the across component is the squared length of a vector that is, the
-/// cross product of the vector part with the axis.
+/// the depth, and the across component is the squared length of a vector that is linear
+/// in it: the cross product of the vector part with the axis.
 struct PlaneLine {
     origin: DVec3,
     dir: DVec3,
