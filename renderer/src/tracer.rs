@@ -857,11 +857,6 @@ impl<'w> Tracer<'w> {
             )
         };
         let mut q = segment(self, origin, remaining);
-        // A ray that leaves every object behind at once finds none (and crosses no media
-        // when it starts outside all).
-        if self.shadow_start.is_empty() && self.world.bvh.left_behind(origin, direction, q.tmin) {
-            return colour;
-        }
         if let Some(blocker) = self.last_blocker
             && !self
                 .shadow_surface

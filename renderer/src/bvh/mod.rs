@@ -9,7 +9,6 @@ use crate::bounds::Aabb;
 use crate::camera::View;
 use crate::object::{Hit, Object, Query};
 use crate::ray::RayKind;
-use glam::DVec3;
 use tree::Tree;
 use vista::Vista;
 
@@ -29,8 +28,6 @@ pub struct Bvh {
     /// The objects each ray from a perspective or orthographic camera may meet, when the
     /// camera is known (see [`Bvh::view_from`]).
     vista: Option<Vista>,
-    /// A box that holds every object's surface (see [`reach`]).
-    reach: Aabb,
 }
 
 impl Bvh {
@@ -51,32 +48,13 @@ impl Bvh {
             .iter()
             .chain(&unbounded)
             .fold(0, |set, o| set | o.kinds());
-        let reach = reach(tree.bounds(), &unbounded);
         Bvh {
             tree,
             objects,
             unbounded,
             kinds,
             vista: None,
-            reach,
         }
-    }
-
-    /// Whether the ray from `origin` along `direction` meets no object from `tmin` on, as
-    /// a search would find, told without one: along some axis the ray moves away from
-    /// every object's side of [`reach`], beyond which it already is at `tmin`. Shadow rays
-    /// from the faces of a scene's objects that all stand on one plane, towards a light in
-    /// front of it, go this way.
-    pub fn left_behind(&self, origin: DVec3, direction: DVec3, tmin: f64) -> bool {
-        let (low, high) = (self.reach.min, self.reach.max);
-        let start = origin + direction * tmin;
-        // A margin far above the rounding of `start` and far below the distance to `tmin`.
-        let margin = |side: f64| 1e-11 * (1.0 + side.abs());
-        (0..3).any(|axis| {
-            let (d, at) = (direction[axis], start[axis]);
-            (d < 0.0 && at < low[axis] - margin(low[axis]))
-                || (d > 0.0 && at > high[axis] + margin(high[axis]))
-        })
     }
 
     /// Lists the objects the rays of a perspective or orthographic camera may meet, by
@@ -211,40 +189,6 @@ impl Bvh {
     }
 }
 
-/// A box that holds the surfaces of the bounded objects (within `bounded`) and of the
-/// `unbounded` ones: along the normal of a plane whose normal is an axis, the plane's
-/// place; along every other axis, and along all of them for any other unbounded object,
-/// everything.
-fn reach(bounded: Aabb, unbounded: &[Object]) -> Aabb {
-    let mut reach = bounded;
-    for object in unbounded {
-        let plane = match object {
-            Object::Leaf(leaf) => leaf.flat_plane(),
-            Object::Csg(_) => None,
-        };
-        let axis = plane.and_then(|(normal, _)| {
-            (0..3).find(|&a| normal[a].abs() == 1.0 && normal.length_squared() == 1.0)
-        });
-        let (Some((normal, offset)), Some(axis)) = (plane, axis) else {
-            return Aabb {
-                min: DVec3::NEG_INFINITY,
-                max: DVec3::INFINITY,
-            };
-        };
-        let place = offset * normal[axis];
-        for a in 0..3 {
-            if a == axis {
-                reach.min[a] = reach.min[a].min(place);
-                reach.max[a] = reach.max[a].max(place);
-            } else {
-                reach.min[a] = f64::NEG_INFINITY;
-                reach.max[a] = f64::INFINITY;
-            }
-        }
-    }
-    reach
-}
-
 /// [`Object::nearest`] inside the query's interval ended at `tmax` (the searches keep
 /// the end they narrow apart from the query, which they do not copy), with a leaf, most
 /// objects, tested here without a call: the call's frame, sized for CSG nodes, costs the
@@ -301,31 +245,6 @@ mod tests {
     use crate::ray::{Ray, RayKind};
     use crate::tracer::World;
     use glam::DVec3;
-
-    #[test]
-    fn rays_leave_every_object_behind_only_beyond_their_reach() {
-        let objects = "box { <0, 0, 0>, <1, 1, 1> pigment { rgb 1 } }
-                       sphere { <3, 0.5, 0.5>, 0.5 pigment { rgb 1 } }";
-        let bvh = &world(objects).bvh;
-        let (tmin, face) = (1e-9, DVec3::new(0.5, 0.5, 0.0));
-        // From the face at z = 0, which every object stands behind, away from them.
-        let away = DVec3::new(0.1, 0.2, -1.0).normalize();
-        assert!(bvh.left_behind(face, away, tmin));
-        // Along the face or into it, the search decides; so it does from the other side.
-        assert!(!bvh.left_behind(face, DVec3::X, tmin));
-        assert!(!bvh.left_behind(face, DVec3::Z, tmin));
-        assert!(!bvh.left_behind(DVec3::new(0.5, 0.5, 1.0), -DVec3::Z, tmin));
-        // A floor reaches everywhere along x and z, and only to its height along y.
-        let bvh = &world(&format!("{objects} plane {{ y, 0 pigment {{ rgb 1 }} }}")).bvh;
-        assert!(!bvh.left_behind(face, away, tmin));
-        assert!(bvh.left_behind(DVec3::new(0.5, 1.0, 0.5), DVec3::Y, tmin));
-        // A tilted plane reaches everywhere.
-        let bvh = &world(&format!(
-            "{objects} plane {{ <0, 1, 0.1>, 0 pigment {{ rgb 1 }} }}"
-        ))
-        .bvh;
-        assert!(!bvh.left_behind(DVec3::new(0.5, 1.0, 0.5), DVec3::Y, tmin));
-    }
 
     /// Where along +z from z = -10 the search ends, and whether what it met is opaque.
     fn along_z(world: &World, occluder: bool) -> Option<(f64, bool)> {
