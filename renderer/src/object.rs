@@ -99,7 +99,9 @@ pub struct Leaf {
 
 /// The sides of a flat leaf's plane that no other object reaches into, the side its
 /// normal points to and the other, as two bits of one byte: a scene may hold a hundred
-/// thousand leaves.
+/// thousand leaves. The byte's other six bits hold the sides of the box of every object
+/// that the leaf's own box reaches, across which rays from its surface may leave every
+/// object behind (see [`crate::bvh::Bvh::left_behind`]), set when the hierarchy is built.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct OpenSides(u8);
 
@@ -107,9 +109,25 @@ impl OpenSides {
     pub const NONE: OpenSides = OpenSides(0);
     const FRONT: u8 = 1;
     const BACK: u8 = 2;
+    const FLAT: u8 = Self::FRONT | Self::BACK;
 
     pub fn new(front: bool, back: bool) -> OpenSides {
         OpenSides((u8::from(front) * Self::FRONT) | (u8::from(back) * Self::BACK))
+    }
+
+    /// The open sides of the flat leaf's plane alone.
+    pub fn flat(self) -> OpenSides {
+        OpenSides(self.0 & Self::FLAT)
+    }
+
+    /// These sides with the box sides `reach` (six bits: low x, y, z, high x, y, z).
+    pub fn with_reach(self, reach: u8) -> OpenSides {
+        OpenSides(self.flat().0 | reach << 2)
+    }
+
+    /// The box sides the leaf reaches (six bits, as [`OpenSides::with_reach`] takes them).
+    pub fn reach(self) -> u8 {
+        self.0 >> 2
     }
 
     /// Whether the side `along` (the sign of a direction's dot product with the normal)

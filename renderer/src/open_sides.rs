@@ -117,7 +117,7 @@ mod tests {
             .bvh
             .objects()
             .find_map(|o| match o {
-                Object::Leaf(leaf) if leaf.flat_plane().is_some() => Some(leaf.open_sides),
+                Object::Leaf(leaf) if leaf.flat_plane().is_some() => Some(leaf.open_sides.flat()),
                 _ => None,
             })
             .expect("a flat leaf")
@@ -184,7 +184,7 @@ mod tests {
         let disc_sides = |world: &crate::tracer::World| {
             world.bvh.objects().find_map(|o| match o {
                 Object::Leaf(leaf) if leaf.flat_plane().is_some() && leaf.bounds.is_finite() => {
-                    Some(leaf.open_sides)
+                    Some(leaf.open_sides.flat())
                 }
                 _ => None,
             })

@@ -611,7 +611,7 @@ impl<'w> Tracer<'w> {
                 Some(_) => incoming.colour,
                 None => DVec3::ZERO,
             }
-        } else if self.unobstructed(light, incoming, surface) {
+        } else if self.unobstructed(light, p, incoming, surface) {
             incoming.colour
         } else {
             // Inside containers of media the shadow ray crosses their media up to where it
@@ -641,17 +641,27 @@ impl<'w> Tracer<'w> {
         colour
     }
 
-    /// Whether the light of `light` arriving at a point of `surface` from `incoming`'s
+    /// Whether the light of `light` arriving at `p` on `surface` from `incoming`'s
     /// direction is sure to meet nothing on its way: a light without an area, straight and
     /// not through media, that comes from a side of the flat surface's plane no object
-    /// reaches (see [`crate::open_sides`]). [`Self::unshadowed`] would search and find
-    /// nothing.
-    fn unobstructed(&mut self, light: &Light, incoming: &Incoming, surface: &'w Leaf) -> bool {
+    /// reaches (see [`crate::open_sides`]), or across a side of the box of every object that
+    /// the surface lies on (see [`crate::bvh::Bvh::left_behind`]). [`Self::unshadowed`]
+    /// would search and find nothing.
+    fn unobstructed(
+        &mut self,
+        light: &Light,
+        p: DVec3,
+        incoming: &Incoming,
+        surface: &'w Leaf,
+    ) -> bool {
         let world = self.world;
+        let reach = surface.open_sides.reach();
         !world.participating
             && light.projected_through.is_none()
             && (light.area.is_none() || !world.quality.area_lights)
-            && self.leads_nowhere(surface, incoming.direction)
+            && (self.leads_nowhere(surface, incoming.direction)
+                || (reach != 0
+                    && (world.bvh).left_behind(reach, p, incoming.direction, self.tolerance(p))))
     }
 
     /// Whether a ray leaving a point of the surface of `leaf` along `direction` meets
@@ -660,7 +670,7 @@ impl<'w> Tracer<'w> {
     /// point of a flat one, and a call costs the interpreted plugin a frame.
     #[inline]
     fn leads_nowhere(&self, leaf: &Leaf, direction: DVec3) -> bool {
-        if leaf.open_sides == OpenSides::NONE {
+        if leaf.open_sides.flat() == OpenSides::NONE {
             return false;
         }
         leaf.open_sides

@@ -9,6 +9,8 @@ use crate::bounds::Aabb;
 use crate::camera::View;
 use crate::object::{Hit, Object, Query};
 use crate::ray::RayKind;
+use crate::shapes::Shape;
+use glam::DVec3;
 use tree::Tree;
 use vista::Vista;
 
@@ -28,15 +30,24 @@ pub struct Bvh {
     /// The objects each ray from a perspective or orthographic camera may meet, when the
     /// camera is known (see [`Bvh::view_from`]).
     vista: Option<Vista>,
+    /// A box that holds every object's surface (see [`reach`]), grown by a margin far
+    /// above the rounding of a ray's point and far below a ray's step to its `tmin`.
+    reach: Aabb,
 }
 
 impl Bvh {
     pub fn build(objects: Vec<Object>) -> Bvh {
-        let (bounded, unbounded): (Vec<Object>, Vec<Object>) = objects
+        let (mut bounded, unbounded): (Vec<Object>, Vec<Object>) = objects
             .into_iter()
             .filter(|o| !o.bounds().is_empty())
             .partition(|o| o.bounds().is_finite());
         let boxes: Vec<Aabb> = bounded.iter().map(Object::bounds).collect();
+        let reach = reach(
+            boxes.iter().fold(Aabb::EMPTY, |all, b| all.union(b)),
+            &unbounded,
+        );
+        let planes: Vec<(usize, f64)> = unbounded.iter().filter_map(axis_plane).collect();
+        mark_reach_sides(&mut bounded, &reach, &planes);
         let (mut tree, order) = Tree::build(&boxes, LEAF_SIZE);
         let mut slots: Vec<Option<Object>> = bounded.into_iter().map(Some).collect();
         let objects: Vec<Object> = order
@@ -48,13 +59,33 @@ impl Bvh {
             .iter()
             .chain(&unbounded)
             .fold(0, |set, o| set | o.kinds());
+        let margin = |side: DVec3| (DVec3::ONE + side.abs()) * 1e-11;
+        let reach = Aabb {
+            min: reach.min - margin(reach.min),
+            max: reach.max + margin(reach.max),
+        };
         Bvh {
             tree,
             objects,
             unbounded,
             kinds,
             vista: None,
+            reach,
         }
+    }
+
+    /// Whether the ray from `origin` along `direction` meets no object from `tmin` on, as
+    /// a search would find, told without one: along some axis the ray moves away from
+    /// every object, across a side of [`reach`] among `sides`, beyond which it already is
+    /// at `tmin`. Shadow rays from the faces of a scene's objects that all stand on one
+    /// plane, towards a light in front of it, go this way. `sides` are bits, low x, y, z
+    /// then high x, y, z: those a leaf's box reaches ([`crate::object::OpenSides::reach`]),
+    /// which a ray from its surface may cross at once.
+    pub fn left_behind(&self, sides: u8, origin: DVec3, direction: DVec3, tmin: f64) -> bool {
+        let start = origin + direction * tmin;
+        let below = start.cmplt(self.reach.min) & direction.cmplt(DVec3::ZERO);
+        let above = start.cmpgt(self.reach.max) & direction.cmpgt(DVec3::ZERO);
+        (below.bitmask() | above.bitmask() << 3) & u32::from(sides) != 0
     }
 
     /// Lists the objects the rays of a perspective or orthographic camera may meet, by
@@ -189,6 +220,80 @@ impl Bvh {
     }
 }
 
+/// Marks each box among `objects` with the sides of `reach` that one of its faces lies
+/// on, to within far more than the step a ray from its surface takes to its `tmin`: the
+/// sides rays from that face leave every object behind across. Other shapes touch a side
+/// of their box at a point or a line at most, where few rays start, and are not marked:
+/// their shadow rays would pay for the test and never gain. Nor are the sides where one of
+/// `planes` (axes and places) lies: a face on a floor is covered by it.
+fn mark_reach_sides(objects: &mut [Object], reach: &Aabb, planes: &[(usize, f64)]) {
+    let near = |a: f64, b: f64| (a - b).abs() <= 1e-6 * (1.0 + b.abs());
+    for object in objects {
+        let Object::Leaf(leaf) = object else {
+            continue;
+        };
+        if !matches!(leaf.shape, Shape::Cuboid(_)) {
+            continue;
+        }
+        // A box with a frame of its own has a face on a side when four of its corners lie
+        // there; without one, it is its own world box.
+        let corners = leaf.frame_corners();
+        let face_on = |axis: usize, side: f64| {
+            corners.is_none_or(|c| c.iter().filter(|c| near(c[axis], side)).count() >= 4)
+                && !planes
+                    .iter()
+                    .any(|&(a, place)| a == axis && near(place, side))
+        };
+        let mut sides = 0;
+        for axis in 0..3 {
+            let (low, high) = (reach.min[axis], reach.max[axis]);
+            if near(leaf.bounds.min[axis], low) && face_on(axis, low) {
+                sides |= 1 << axis;
+            }
+            if near(leaf.bounds.max[axis], high) && face_on(axis, high) {
+                sides |= 8 << axis;
+            }
+        }
+        leaf.open_sides = leaf.open_sides.with_reach(sides);
+    }
+}
+
+/// A box that holds the surfaces of the bounded objects (within `bounded`) and of the
+/// `unbounded` ones: along the normal of a plane whose normal is an axis, the plane's
+/// place; along every other axis, and along all of them for any other unbounded object,
+/// everything.
+fn reach(bounded: Aabb, unbounded: &[Object]) -> Aabb {
+    let mut reach = bounded;
+    for object in unbounded {
+        let Some((axis, place)) = axis_plane(object) else {
+            return Aabb::INFINITE;
+        };
+        for a in 0..3 {
+            if a == axis {
+                reach.min[a] = reach.min[a].min(place);
+                reach.max[a] = reach.max[a].max(place);
+            } else {
+                reach.min[a] = f64::NEG_INFINITY;
+                reach.max[a] = f64::INFINITY;
+            }
+        }
+    }
+    reach
+}
+
+/// The axis and the place along it of a plane whose normal is that axis.
+fn axis_plane(object: &Object) -> Option<(usize, f64)> {
+    let Object::Leaf(leaf) = object else {
+        return None;
+    };
+    let (normal, offset) = leaf.flat_plane()?;
+    // Exactly an axis: a normal that only rounds to one (<1e-9, 1, 0>) tilts the plane
+    // away from its place far from the origin.
+    let axis =
+        (0..3).find(|&a| normal[a].abs() == 1.0 && (0..3).all(|b| b == a || normal[b] == 0.0))?;
+    Some((axis, offset * normal[axis]))
+}
+
 /// [`Object::nearest`] inside the query's interval ended at `tmax` (the searches keep
 /// the end they narrow apart from the query, which they do not copy), with a leaf, most
 /// objects, tested here without a call: the call's frame, sized for CSG nodes, costs the
@@ -245,6 +350,60 @@ mod tests {
     use crate::ray::{Ray, RayKind};
     use crate::tracer::World;
     use glam::DVec3;
+
+    #[test]
+    fn rays_leave_every_object_behind_only_beyond_their_reach() {
+        const ALL: u8 = 0b11_1111;
+        let objects = "box { <0, 0, 0>, <1, 1, 1> pigment { rgb 1 } }
+                       sphere { <3, 0.5, 0.5>, 0.5 pigment { rgb 1 } }";
+        let bvh = &world(objects).bvh;
+        // The box lies on every side but high x, where the sphere lies; the sphere is
+        // not marked.
+        let sides: Vec<u8> = bvh
+            .objects()
+            .filter_map(|o| match o {
+                crate::object::Object::Leaf(leaf) => Some(leaf.open_sides.reach()),
+                crate::object::Object::Csg(_) => None,
+            })
+            .collect();
+        assert!(
+            sides.contains(&0b11_0111) && sides.contains(&0),
+            "{sides:?}"
+        );
+        // A box turned about z lies on the sides across z only.
+        let turned = world(
+            "box { <0, 0, 0>, <1, 1, 1> rotate z * 30 pigment { rgb 1 } }
+             sphere { <3, 0.5, 0.5>, 0.5 pigment { rgb 1 } }",
+        );
+        assert!(turned.bvh.objects().any(|o| matches!(
+            o,
+            crate::object::Object::Leaf(leaf) if leaf.open_sides.reach() == 0b10_0100
+        )));
+        let (tmin, face) = (1e-9, DVec3::new(0.5, 0.5, 0.0));
+        // From the face at z = 0, which every object stands behind, away from them.
+        let away = DVec3::new(0.1, 0.2, -1.0).normalize();
+        assert!(bvh.left_behind(ALL, face, away, tmin));
+        // Along the face or into it, the search decides; so it does from the other side.
+        assert!(!bvh.left_behind(ALL, face, DVec3::X, tmin));
+        assert!(!bvh.left_behind(ALL, face, DVec3::Z, tmin));
+        assert!(!bvh.left_behind(ALL, DVec3::new(0.5, 0.5, 1.0), -DVec3::Z, tmin));
+        // A floor reaches everywhere along x and z, and only to its height along y; the
+        // box's face on it is not marked.
+        let floored = world(&format!("{objects} plane {{ y, 0 pigment {{ rgb 1 }} }}"));
+        assert!(floored.bvh.objects().all(|o| match o {
+            crate::object::Object::Leaf(leaf) => leaf.open_sides.reach() & 0b10 == 0,
+            crate::object::Object::Csg(_) => true,
+        }));
+        let bvh = &world(&format!("{objects} plane {{ y, 0 pigment {{ rgb 1 }} }}")).bvh;
+        assert!(!bvh.left_behind(ALL, face, away, tmin));
+        assert!(bvh.left_behind(ALL, DVec3::new(0.5, 1.0, 0.5), DVec3::Y, tmin));
+        // A tilted plane reaches everywhere.
+        let bvh = &world(&format!(
+            "{objects} plane {{ <0, 1, 0.1>, 0 pigment {{ rgb 1 }} }}"
+        ))
+        .bvh;
+        assert!(!bvh.left_behind(ALL, DVec3::new(0.5, 1.0, 0.5), DVec3::Y, tmin));
+    }
 
     /// Where along +z from z = -10 the search ends, and whether what it met is opaque.
     fn along_z(world: &World, occluder: bool) -> Option<(f64, bool)> {
