@@ -324,6 +324,24 @@ pub fn evaluate_warped_each<const N: usize>(
 
 /// The pattern's value at a point that has been through its warps already.
 pub fn evaluate_warped(pattern: &Pattern, p: DVec3, facing: Option<&Facing>) -> PatternValue {
+    // The gradient, the commonest pattern, without the frame of the function that knows
+    // every pattern: the saved registers and stack of its heavier arms cost a gradient's
+    // value twice what the value itself does.
+    if let (PatternKind::Gradient(unit), None) = (&pattern.kind, &pattern.turbulence) {
+        // Along a zero vector 0 everywhere, as `blend_value` gives.
+        let raw = if *unit != DVec3::ZERO {
+            p.dot(*unit)
+        } else {
+            0.0
+        };
+        return PatternValue::Blend(shape(pattern, raw));
+    }
+    evaluate_any(pattern, p, facing)
+}
+
+/// [`evaluate_warped`] for every pattern.
+#[inline(never)]
+fn evaluate_any(pattern: &Pattern, p: DVec3, facing: Option<&Facing>) -> PatternValue {
     let classic = pattern.turbulence.as_ref();
     let generator = pattern.noise_generator;
     let turbulent = |p: DVec3| match classic {
@@ -498,6 +516,7 @@ fn wrap(v: f64, modulus: f64) -> f64 {
 const NEGATIVE_MODULUS: f64 = 1.000_01;
 
 /// Frequency and phase, then the wave type; the result lies in 0..1.
+#[inline(always)]
 fn shape(pattern: &Pattern, raw: f64) -> f64 {
     // The evaluator gives marble and wood their triangle wave unless the scene says
     // otherwise.
