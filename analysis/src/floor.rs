@@ -51,9 +51,35 @@ pub(crate) fn floor_whole(x: f64) -> (f64, i64) {
     }
 }
 
+/// [`floor_whole`] with the integer as an `i32`, saturating as the floor's `as i32` does
+/// (the pavement's cells: a small tile far out on an infinite plane lies past 2^31).
+#[inline(always)]
+pub(crate) fn floor_whole_i32(x: f64) -> (f64, i32) {
+    let (floor, whole) = floor_whole(x);
+    (floor, whole.clamp(i32::MIN.into(), i32::MAX.into()) as i32)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn floor_whole_i32_saturates_as_the_conversion_does() {
+        for x in [
+            0.5,
+            -0.5,
+            3e9,
+            -3e9,
+            2_147_483_647.5,
+            -2_147_483_648.5,
+            1e300,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ] {
+            assert_eq!(floor_whole_i32(x).1, x.floor() as i32, "{x}");
+        }
+    }
 
     #[test]
     fn floor_whole_is_the_floor_and_its_integer() {

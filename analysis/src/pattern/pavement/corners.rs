@@ -30,7 +30,7 @@
 //! faces across the lattice directions (sharp) or along them (cut), or the Euclidean one.
 
 use super::{Lattice, Layout, ROOT3_2};
-use crate::floor::floor_whole;
+use crate::floor::floor_whole_i32;
 use crate::scene::Pavement;
 use glam::DVec2;
 
@@ -106,9 +106,9 @@ const MINUS_Z: u8 = 8;
 /// The distance of `q` from the tile's edges as the ramp counts it (at most 1/2, where
 /// the ramp ends), for square cells with the corner looks of `pavement`.
 pub(super) fn square_distance(layout: &Layout, pavement: &Pavement, q: DVec2) -> f64 {
-    let ((x, whole_x), (z, whole_z)) = (floor_whole(q.x), floor_whole(q.y));
+    let ((x, whole_x), (z, whole_z)) = (floor_whole_i32(q.x), floor_whole_i32(q.y));
     let (u, w) = (q.x - x, q.y - z);
-    let lower_left = layout.in_period((whole_x as i32, whole_z as i32));
+    let lower_left = layout.in_period((whole_x, whole_z));
     // The masks of the cell's corners, by (cx, cz) offset from its lower left one.
     let mask = |offset: (i32, i32)| layout.mask_near(lower_left, offset);
     let masks = [[mask((0, 0)), mask((0, 1))], [mask((1, 0)), mask((1, 1))]];

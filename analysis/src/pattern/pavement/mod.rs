@@ -21,7 +21,7 @@
 
 mod corners;
 
-use crate::floor::floor_whole;
+use crate::floor::floor_whole_i32;
 use crate::scene::Pavement;
 use glam::{DVec2, DVec3};
 use std::sync::OnceLock;
@@ -126,15 +126,12 @@ impl Lattice {
     /// points up, or the one left of where it points down), and whether it points down.
     fn locate(self, q: DVec2) -> ((i32, i32), bool) {
         if self == Lattice::Square {
-            return (
-                (floor_whole(q.x).1 as i32, floor_whole(q.y).1 as i32),
-                false,
-            );
+            return ((floor_whole_i32(q.x).1, floor_whole_i32(q.y).1), false);
         }
         let b = q.y / ROOT3_2;
         let a = q.x - 0.5 * b;
-        let ((i, whole_i), (k, whole_k)) = (floor_whole(a), floor_whole(b));
-        ((whole_i as i32, whole_k as i32), (a - i) + (b - k) >= 1.0)
+        let ((i, whole_i), (k, whole_k)) = (floor_whole_i32(a), floor_whole_i32(b));
+        ((whole_i, whole_k), (a - i) + (b - k) >= 1.0)
     }
 
     /// The corners of the cell that holds the square or triangle whose first vertex is
