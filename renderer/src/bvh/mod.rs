@@ -405,6 +405,70 @@ mod tests {
         assert!(!bvh.left_behind(ALL, DVec3::new(0.5, 1.0, 0.5), DVec3::Y, tmin));
     }
 
+    /// Whatever the scene, a ray `left_behind` answers for meets nothing in the search:
+    /// planes facing down, inverse, translated or nearly along an axis, CSG, and rays
+    /// from all over, most of them from the boxes' faces.
+    #[test]
+    fn a_ray_left_behind_meets_nothing() {
+        const ALL: u8 = 0b11_1111;
+        let boxes = "box { <0, 0, 0>, <1, 1, 1> pigment { rgb 1 } }
+                     box { <2, 0, 0>, <3, 2, 1> translate <0, 0, 0.5> pigment { rgb 1 } }";
+        let extras = [
+            "",
+            "plane { -y, 0 pigment { rgb 1 } }",
+            "plane { y, 0 inverse pigment { rgb 1 } }",
+            "plane { y, 0 translate <0, -0.5, 0> pigment { rgb 1 } }",
+            "plane { <1e-9, 1, 0>, 0 pigment { rgb 1 } }",
+            "union { plane { z, -1 } sphere { <5, 5, 5>, 1 } pigment { rgb 1 } }",
+            "difference { box { <-1, -1, -1>, <4, 3, 2> } sphere { <1, 1, 1>, 0.5 } pigment { rgb 1 } }",
+        ];
+        // A fixed hash of the ray's index, so the test is the same every run.
+        let unit = |i: u64, k: u64| {
+            let h = (i * 6 + k + 1).wrapping_mul(0x9e37_79b9_7f4a_7c15) >> 11;
+            h as f64 / (1u64 << 53) as f64
+        };
+        for extra in extras {
+            let world = world(&format!("{boxes} {extra}"));
+            let mut scratch = Vec::new();
+            let mut answered = 0;
+            for i in 0..4000u64 {
+                let corner = DVec3::new(3.0 * unit(i, 0), 2.0 * unit(i, 1), 1.5 * unit(i, 2));
+                // Snap one coordinate onto a box face's plane (0 or 1.5, the scene's ends).
+                let mut origin = corner;
+                let axis = (i % 3) as usize;
+                origin[axis] = if i % 2 == 0 {
+                    0.0
+                } else {
+                    [3.0, 2.0, 1.5][axis]
+                };
+                let direction = DVec3::new(unit(i, 3) - 0.5, unit(i, 4) - 0.5, unit(i, 5) - 0.5)
+                    .normalize_or_zero();
+                if direction == DVec3::ZERO {
+                    continue;
+                }
+                let tmin = 1e-9;
+                if world.bvh.left_behind(ALL, origin, direction, tmin) {
+                    answered += 1;
+                    let q = Query::new(
+                        Ray::new(origin, direction),
+                        RayKind::Shadow,
+                        tmin,
+                        f64::INFINITY,
+                    );
+                    assert!(
+                        world.bvh.nearest(&q, &mut scratch).is_none(),
+                        "{extra}: {origin} {direction}"
+                    );
+                }
+            }
+            // The scenes without an unbounded object, or with one plane along an axis,
+            // do answer for some rays.
+            if extra.is_empty() || extra.starts_with("plane { -y") {
+                assert!(answered > 0, "{extra}");
+            }
+        }
+    }
+
     /// Where along +z from z = -10 the search ends, and whether what it met is opaque.
     fn along_z(world: &World, occluder: bool) -> Option<(f64, bool)> {
         let ray = Ray::new(DVec3::new(0.0, 0.0, -10.0), DVec3::Z);
