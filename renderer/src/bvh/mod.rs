@@ -42,12 +42,14 @@ impl Bvh {
             .filter(|o| !o.bounds().is_empty())
             .partition(|o| o.bounds().is_finite());
         let boxes: Vec<Aabb> = bounded.iter().map(Object::bounds).collect();
+        // The unbounded objects as planes along an axis, or `None` when one of them is
+        // anything else, which reaches everywhere.
+        let planes: Option<Vec<(usize, f64)>> = unbounded.iter().map(axis_plane).collect();
         let reach = reach(
             boxes.iter().fold(Aabb::EMPTY, |all, b| all.union(b)),
-            &unbounded,
+            planes.as_deref(),
         );
-        let planes: Vec<(usize, f64)> = unbounded.iter().filter_map(axis_plane).collect();
-        mark_reach_sides(&mut bounded, &reach, &planes);
+        mark_reach_sides(&mut bounded, &reach, planes.as_deref().unwrap_or_default());
         let (mut tree, order) = Tree::build(&boxes, LEAF_SIZE);
         let mut slots: Vec<Option<Object>> = bounded.into_iter().map(Some).collect();
         let objects: Vec<Object> = order
@@ -259,15 +261,15 @@ fn mark_reach_sides(objects: &mut [Object], reach: &Aabb, planes: &[(usize, f64)
 }
 
 /// A box that holds the surfaces of the bounded objects (within `bounded`) and of the
-/// `unbounded` ones: along the normal of a plane whose normal is an axis, the plane's
-/// place; along every other axis, and along all of them for any other unbounded object,
-/// everything.
-fn reach(bounded: Aabb, unbounded: &[Object]) -> Aabb {
+/// unbounded ones, `planes` along an axis (axes and places, see [`axis_plane`]), or
+/// `None` when some unbounded object is not such a plane: along a plane's axis, its
+/// place; along every other axis, and along all of them for `None`, everything.
+fn reach(bounded: Aabb, planes: Option<&[(usize, f64)]>) -> Aabb {
+    let Some(planes) = planes else {
+        return Aabb::INFINITE;
+    };
     let mut reach = bounded;
-    for object in unbounded {
-        let Some((axis, place)) = axis_plane(object) else {
-            return Aabb::INFINITE;
-        };
+    for &(axis, place) in planes {
         for a in 0..3 {
             if a == axis {
                 reach.min[a] = reach.min[a].min(place);
