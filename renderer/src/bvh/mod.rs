@@ -229,7 +229,9 @@ impl Bvh {
 /// would pay for the test and never gain. Nor are the sides where one of the unbounded
 /// objects' `planes` lies: a face on a floor is covered by it.
 fn mark_reach_sides(objects: &mut [Object], spans: &[Span; 3], planes: &[Option<(DVec3, f64)>]) {
-    let near = |a: f64, b: f64| (a - b).abs() <= 1e-6 * (1.0 + b.abs());
+    // Only a finite side is one to leave every object behind across; by this measure every
+    // place would be near an infinite one.
+    let near = |a: f64, b: f64| b.is_finite() && (a - b).abs() <= 1e-6 * (1.0 + b.abs());
     // Where along each axis a plane lies: those whose normal is that axis, either way.
     let places: [Vec<f64>; 3] = [DVec3::X, DVec3::Y, DVec3::Z].map(|axis| {
         planes
@@ -365,19 +367,24 @@ mod tests {
         assert!(!bvh.left_behind(ALL, DVec3::new(0.5, 0.5, 1.0), -DVec3::Z, tmin));
         // A floor reaches everywhere along x and z, and only to its height along y; the
         // box's face on it is not marked.
+        // The sides a floor makes infinite are not marked either: only the box's top is.
         let floored = world(&format!("{objects} plane {{ y, 0 pigment {{ rgb 1 }} }}"));
         assert!(floored.bvh.objects().all(|o| match o {
-            crate::object::Object::Leaf(leaf) => leaf.open_sides.reach() & 0b10 == 0,
+            crate::object::Object::Leaf(leaf) => leaf.open_sides.reach() & !0b01_0000 == 0,
             crate::object::Object::Csg(_) => true,
         }));
         let bvh = &world(&format!("{objects} plane {{ y, 0 pigment {{ rgb 1 }} }}")).bvh;
         assert!(!bvh.left_behind(ALL, face, away, tmin));
         assert!(bvh.left_behind(ALL, DVec3::new(0.5, 1.0, 0.5), DVec3::Y, tmin));
-        // A tilted plane reaches everywhere.
+        // A tilted plane reaches everywhere, and no side is marked.
         let bvh = &world(&format!(
             "{objects} plane {{ <0, 1, 0.1>, 0 pigment {{ rgb 1 }} }}"
         ))
         .bvh;
+        assert!(bvh.objects().all(|o| match o {
+            crate::object::Object::Leaf(leaf) => leaf.open_sides.reach() == 0,
+            crate::object::Object::Csg(_) => true,
+        }));
         assert!(!bvh.left_behind(ALL, DVec3::new(0.5, 1.0, 0.5), DVec3::Y, tmin));
     }
 
