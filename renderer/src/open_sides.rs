@@ -6,8 +6,8 @@
 //!
 //! Each standalone disc, polygon and plane is marked once, before tracing, with the sides
 //! of its plane beyond the reach of all the other objects along its normal, grown by the
-//! margin [`crate::reach`] explains: a ray's point on the surface lies off the exact plane
-//! by a rounding, never by the margin.
+//! margin [`crate::reach`] explains, which a ray's point on the surface, off the exact
+//! plane by a rounding, does not cross.
 
 use crate::bounds::Aabb;
 use crate::object::{Object, OpenSides};
@@ -35,7 +35,8 @@ pub fn mark_open_sides(objects: &mut [Object]) {
     for (i, b) in boxes.iter().enumerate().rev() {
         after[i] = after[i + 1].union(b);
     }
-    // The unbounded objects, by their places among `objects`.
+    // The unbounded objects' planes, with their places among `objects`, so that a leaf
+    // leaves itself out.
     let unbounded: Vec<(usize, Option<(DVec3, f64)>)> = objects
         .iter()
         .enumerate()
@@ -61,6 +62,8 @@ pub fn mark_open_sides(objects: &mut [Object]) {
             normal,
         )
         .grown();
+        // Open in front (where the normal points) when the plane lies above everything
+        // else, behind when below.
         leaf.open_sides = OpenSides::new(offset > others.high, offset < others.low);
     }
 }

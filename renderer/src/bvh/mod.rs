@@ -23,7 +23,9 @@ const LEAF_SIZE: usize = 2;
 #[derive(Debug, Clone)]
 pub struct Bvh {
     tree: Tree,
+    /// The bounded objects, in the order of the tree's leaves.
     objects: Vec<Object>,
+    /// The objects with an infinite box, which every search tests.
     unbounded: Vec<Object>,
     /// The kinds of rays that may meet some object (a set of
     /// [`RayKind::bit`](crate::ray::RayKind::bit)s).
@@ -37,6 +39,8 @@ pub struct Bvh {
 }
 
 impl Bvh {
+    /// The hierarchy over `objects`; those with an empty box, which no ray meets, are left
+    /// out.
     pub fn build(objects: Vec<Object>) -> Bvh {
         let (mut bounded, unbounded): (Vec<Object>, Vec<Object>) = objects
             .into_iter()
@@ -45,6 +49,8 @@ impl Bvh {
         let boxes: Vec<Aabb> = bounded.iter().map(Object::bounds).collect();
         let planes: Vec<Option<(DVec3, f64)>> =
             unbounded.iter().map(reach::unbounded_plane).collect();
+        // How far every object reaches along each axis: the box whose sides shadow rays
+        // may leave them all behind across.
         let all = boxes.iter().fold(Aabb::EMPTY, |all, b| all.union(b));
         let spans = [DVec3::X, DVec3::Y, DVec3::Z]
             .map(|axis| reach::along(&all, planes.iter().copied(), axis));
@@ -78,10 +84,11 @@ impl Bvh {
     /// Whether the ray from `origin` along `direction` meets no object from `tmin` on, as
     /// a search would find, told without one: along some axis the ray moves away from
     /// every object, across a side among `sides` of the box they all reach (grown by the
-    /// margin [`crate::reach`] explains), beyond which it already is at `tmin`. Shadow rays from the faces of a scene's objects that all stand on one
-    /// plane, towards a light in front of it, go this way. `sides` are bits, low x, y, z
-    /// then high x, y, z: those a leaf's box reaches ([`crate::object::OpenSides::reach`]),
-    /// which a ray from its surface may cross at once.
+    /// margin [`crate::reach`] explains), beyond which it already is at `tmin`. Shadow
+    /// rays from the faces of a scene's objects that all stand on one plane, towards a
+    /// light in front of it, go this way. `sides` are bits, low x, y, z then high x, y, z:
+    /// those a leaf's box reaches ([`crate::object::OpenSides::reach`]), which a ray from
+    /// its surface may cross at once.
     pub fn left_behind(&self, sides: u8, origin: DVec3, direction: DVec3, tmin: f64) -> bool {
         let start = origin + direction * tmin;
         let below = start.cmplt(self.reach.min) & direction.cmplt(DVec3::ZERO);
@@ -103,7 +110,7 @@ impl Bvh {
     }
 
     /// Whether `p` is inside any object.
-    pub fn contains(&self, p: glam::DVec3) -> bool {
+    pub fn contains(&self, p: DVec3) -> bool {
         self.objects().any(|o| o.inside(p))
     }
 
@@ -224,10 +231,11 @@ impl Bvh {
 /// Marks each box among `objects` with the ends of `spans` (how far every object reaches
 /// along x, y and z) that one of its faces lies on, to within far more than the step a
 /// ray from its surface takes to its `tmin`: the sides of the reach that rays from that
-/// face leave every object behind across. Other shapes touch a side of their box at a
-/// point or a line at most, where few rays start, and are not marked: their shadow rays
-/// would pay for the test and never gain. Nor are the sides where one of the unbounded
-/// objects' `planes` lies: a face on a floor is covered by it.
+/// face may leave every object behind across. The nearness is generous, since a mark only
+/// lets [`Bvh::left_behind`] be asked, which tells exactly on its own. Other shapes touch
+/// a side of their box at a point or a line at most, where few rays start, and are not
+/// marked: their shadow rays would pay for the test and never gain. Nor are the sides
+/// where one of the unbounded objects' `planes` lies: a face on a floor is covered by it.
 fn mark_reach_sides(objects: &mut [Object], spans: &[Span; 3], planes: &[Option<(DVec3, f64)>]) {
     // Only a finite side is one to leave every object behind across; by this measure every
     // place would be near an infinite one.
