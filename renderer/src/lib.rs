@@ -32,6 +32,7 @@ mod png_output;
 mod polynomial;
 mod radiosity;
 mod ray;
+mod reach;
 mod refraction;
 mod render;
 mod sampling;

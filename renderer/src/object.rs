@@ -414,14 +414,15 @@ impl Leaf {
     }
 
     /// The unit outward normal in the world at a point of this leaf's surface. Inlined for
-    /// planes and discs, whose normal their shape keeps: rays meet and leave them at every
-    /// sample of a floor or a water surface, and a call costs the interpreted plugin a
-    /// frame.
+    /// planes, discs and polygons, whose normal their shape keeps: rays meet and leave them
+    /// at every sample of a floor, a water surface or a wall, and a call costs the
+    /// interpreted plugin a frame.
     #[inline]
     pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
         let kept = match &self.shape {
             Shape::Plane(plane) => plane.world_normal(),
             Shape::Disc(disc) => disc.world_normal(),
+            Shape::Polygon(polygon) => polygon.world_normal(),
             _ => DVec3::ZERO,
         };
         if kept == DVec3::ZERO {
@@ -469,13 +470,14 @@ impl Leaf {
     }
 }
 
-/// Works out a plane's or a disc's normal in the world once, into the shape: it is the
-/// same at each of its points, each ray that meets or leaves one asks for it, and its
-/// transformation costs a dozen operations and a square root.
+/// Works out a plane's, a disc's or a polygon's normal in the world once, into the shape:
+/// it is the same at each of its points, each ray that meets or leaves one asks for it,
+/// and its transformation costs a dozen operations and a square root.
 fn keep_world_normal(shape: &mut Shape, to_local: Option<&DAffine3>) {
     match shape {
         Shape::Plane(plane) => plane.place(world_normal_of(to_local, plane.normal)),
         Shape::Disc(disc) => disc.place(world_normal_of(to_local, DVec3::Z)),
+        Shape::Polygon(polygon) => polygon.place(world_normal_of(to_local, DVec3::Z)),
         _ => {}
     }
 }

@@ -5,16 +5,14 @@
 //! reflections go up into the empty sky, as do its shadow rays towards a light above.
 //!
 //! Each standalone disc, polygon and plane is marked once, before tracing, with the sides
-//! of its plane that the boxes of all the other objects stay clear of by a margin: a ray's
-//! point on the surface lies off the exact plane by a rounding, never by the margin.
+//! of its plane beyond the reach of all the other objects along its normal, grown by the
+//! margin [`crate::reach`] explains, which a ray's point on the surface, off the exact
+//! plane by a rounding, does not cross.
 
 use crate::bounds::Aabb;
 use crate::object::{Object, OpenSides};
+use crate::reach;
 use glam::DVec3;
-
-/// How far, relative to the plane's distance from the origin, the other objects' boxes
-/// must stay from a surface's plane.
-const MARGIN: f64 = 1e-6;
 
 /// Marks each standalone flat leaf among `objects` with the open sides of its plane.
 pub fn mark_open_sides(objects: &mut [Object]) {
@@ -37,16 +35,13 @@ pub fn mark_open_sides(objects: &mut [Object]) {
     for (i, b) in boxes.iter().enumerate().rev() {
         after[i] = after[i + 1].union(b);
     }
-    // The unbounded objects, with their plane when they are planes: their boxes are
-    // infinite along every axis, so only a plane's own equation tells its side.
+    // The unbounded objects' planes, with their places among `objects`, so that a leaf
+    // leaves itself out.
     let unbounded: Vec<(usize, Option<(DVec3, f64)>)> = objects
         .iter()
         .enumerate()
         .filter(|(_, o)| !o.bounds().is_empty() && !o.bounds().is_finite())
-        .map(|(i, o)| match o {
-            Object::Leaf(leaf) => (i, leaf.flat_plane()),
-            Object::Csg(_) => (i, None),
-        })
+        .map(|(i, o)| (i, reach::unbounded_plane(o)))
         .collect();
     for (i, object) in objects.iter_mut().enumerate() {
         let Object::Leaf(leaf) = object else {
@@ -58,51 +53,19 @@ pub fn mark_open_sides(objects: &mut [Object]) {
         let Some((normal, offset)) = leaf.flat_plane() else {
             continue;
         };
-        let margin = MARGIN * (1.0 + offset.abs());
-        // How far the other objects reach along the normal, up and down.
-        let (mut high, mut low) = box_sides(&before[i].union(&after[i + 1]), normal);
-        for (_, plane) in unbounded.iter().filter(|(j, _)| *j != i) {
-            let (h, l) = plane.map_or((f64::INFINITY, f64::NEG_INFINITY), |plane| {
-                plane_sides(plane, normal)
-            });
-            high = high.max(h);
-            low = low.min(l);
-        }
-        leaf.open_sides = OpenSides::new(high <= offset - margin, low >= offset + margin);
+        let others = reach::along(
+            &before[i].union(&after[i + 1]),
+            unbounded
+                .iter()
+                .filter(|(j, _)| *j != i)
+                .map(|&(_, plane)| plane),
+            normal,
+        )
+        .grown();
+        // Open in front (where the normal points) when the plane lies above everything
+        // else, behind when below.
+        leaf.open_sides = OpenSides::new(offset > others.high, offset < others.low);
     }
-}
-
-/// The greatest and the least `normal · x` over the points of a box (`-∞` and `∞` over
-/// an empty one): how far towards each side of a plane of that normal it reaches.
-fn box_sides(b: &Aabb, normal: DVec3) -> (f64, f64) {
-    if b.is_empty() {
-        return (f64::NEG_INFINITY, f64::INFINITY);
-    }
-    let (low, high) = extent_along(b, normal);
-    (high, low)
-}
-
-/// [`box_sides`] for the points of a plane `(n, offset)`: a plane of the same or the
-/// opposite normal lies at one value of `normal · x`; any other reaches every value.
-fn plane_sides((n, offset): (DVec3, f64), normal: DVec3) -> (f64, f64) {
-    if n == normal {
-        (offset, offset)
-    } else if n == -normal {
-        (-offset, -offset)
-    } else {
-        (f64::INFINITY, f64::NEG_INFINITY)
-    }
-}
-
-/// The least and the greatest `normal · x` over a finite box.
-fn extent_along(b: &Aabb, normal: DVec3) -> (f64, f64) {
-    let (mut low, mut high) = (0.0, 0.0);
-    for axis in 0..3 {
-        let (a, c) = (normal[axis] * b.min[axis], normal[axis] * b.max[axis]);
-        low += a.min(c);
-        high += a.max(c);
-    }
-    (low, high)
 }
 
 #[cfg(test)]
@@ -158,6 +121,20 @@ mod tests {
              box { <-1, -1, -1>, <1, 0, 1> pigment { rgb 1 } }",
         );
         assert_eq!(sides, OpenSides::NONE);
+    }
+
+    /// The others' reach is grown by the margin of [`crate::reach`] before the plane is
+    /// compared with it: a disc over a box's top counts as beyond it only further up.
+    #[test]
+    fn a_disc_is_beyond_a_box_under_it_only_past_the_margin() {
+        let over = |height: f64| {
+            sides_of_disc(&format!(
+                "disc {{ <0, {height:e}, 0>, y, 1 pigment {{ rgb 1 }} }}
+                 box {{ <-1, 0, -1>, <1, 1, 1> pigment {{ rgb 1 }} }}"
+            ))
+        };
+        assert_eq!(over(1.0 + 1e-10), OpenSides::new(true, false));
+        assert_eq!(over(1.0 + 1e-12), OpenSides::NONE);
     }
 
     /// Rays leaving a disc open above, reflected, refracted or towards the light, give

@@ -9,6 +9,7 @@ use crate::bounds::Aabb;
 use crate::camera::View;
 use crate::object::{Hit, Object, Query};
 use crate::ray::RayKind;
+use crate::reach::{self, Span};
 use crate::shapes::Shape;
 use glam::DVec3;
 use tree::Tree;
@@ -22,7 +23,9 @@ const LEAF_SIZE: usize = 2;
 #[derive(Debug, Clone)]
 pub struct Bvh {
     tree: Tree,
+    /// The bounded objects, in the order of the tree's leaves.
     objects: Vec<Object>,
+    /// The objects with an infinite box, which every search tests.
     unbounded: Vec<Object>,
     /// The kinds of rays that may meet some object (a set of
     /// [`RayKind::bit`](crate::ray::RayKind::bit)s).
@@ -30,26 +33,28 @@ pub struct Bvh {
     /// The objects each ray from a perspective or orthographic camera may meet, when the
     /// camera is known (see [`Bvh::view_from`]).
     vista: Option<Vista>,
-    /// A box that holds every object's surface (see [`reach`]), grown by a margin far
-    /// above the rounding of a ray's point and far below a ray's step to its `tmin`.
+    /// A box that holds every object's surface: how far they all reach along each axis
+    /// (see [`crate::reach`]), grown by its margin.
     reach: Aabb,
 }
 
 impl Bvh {
+    /// The hierarchy over `objects`; those with an empty box, which no ray meets, are left
+    /// out.
     pub fn build(objects: Vec<Object>) -> Bvh {
         let (mut bounded, unbounded): (Vec<Object>, Vec<Object>) = objects
             .into_iter()
             .filter(|o| !o.bounds().is_empty())
             .partition(|o| o.bounds().is_finite());
         let boxes: Vec<Aabb> = bounded.iter().map(Object::bounds).collect();
-        // The unbounded objects as planes along an axis, or `None` when one of them is
-        // anything else, which reaches everywhere.
-        let planes: Option<Vec<(usize, f64)>> = unbounded.iter().map(axis_plane).collect();
-        let reach = reach(
-            boxes.iter().fold(Aabb::EMPTY, |all, b| all.union(b)),
-            planes.as_deref(),
-        );
-        mark_reach_sides(&mut bounded, &reach, planes.as_deref().unwrap_or_default());
+        let planes: Vec<Option<(DVec3, f64)>> =
+            unbounded.iter().map(reach::unbounded_plane).collect();
+        // How far every object reaches along each axis: the box whose sides shadow rays
+        // may leave them all behind across.
+        let all = boxes.iter().fold(Aabb::EMPTY, |all, b| all.union(b));
+        let spans = [DVec3::X, DVec3::Y, DVec3::Z]
+            .map(|axis| reach::along(&all, planes.iter().copied(), axis));
+        mark_reach_sides(&mut bounded, &spans, &planes);
         let (mut tree, order) = Tree::build(&boxes, LEAF_SIZE);
         let mut slots: Vec<Option<Object>> = bounded.into_iter().map(Some).collect();
         let objects: Vec<Object> = order
@@ -61,10 +66,10 @@ impl Bvh {
             .iter()
             .chain(&unbounded)
             .fold(0, |set, o| set | o.kinds());
-        let margin = |side: DVec3| (DVec3::ONE + side.abs()) * 1e-11;
+        let grown = spans.map(Span::grown);
         let reach = Aabb {
-            min: reach.min - margin(reach.min),
-            max: reach.max + margin(reach.max),
+            min: DVec3::from_array(grown.map(|s| s.low)),
+            max: DVec3::from_array(grown.map(|s| s.high)),
         };
         Bvh {
             tree,
@@ -78,11 +83,12 @@ impl Bvh {
 
     /// Whether the ray from `origin` along `direction` meets no object from `tmin` on, as
     /// a search would find, told without one: along some axis the ray moves away from
-    /// every object, across a side of [`reach`] among `sides`, beyond which it already is
-    /// at `tmin`. Shadow rays from the faces of a scene's objects that all stand on one
-    /// plane, towards a light in front of it, go this way. `sides` are bits, low x, y, z
-    /// then high x, y, z: those a leaf's box reaches ([`crate::object::OpenSides::reach`]),
-    /// which a ray from its surface may cross at once.
+    /// every object, across a side among `sides` of the box they all reach (grown by the
+    /// margin [`crate::reach`] explains), beyond which it already is at `tmin`. Shadow
+    /// rays from the faces of a scene's objects that all stand on one plane, towards a
+    /// light in front of it, go this way. `sides` are bits, low x, y, z then high x, y, z:
+    /// those a leaf's box reaches ([`crate::object::OpenSides::reach`]), which a ray from
+    /// its surface may cross at once.
     pub fn left_behind(&self, sides: u8, origin: DVec3, direction: DVec3, tmin: f64) -> bool {
         let start = origin + direction * tmin;
         let below = start.cmplt(self.reach.min) & direction.cmplt(DVec3::ZERO);
@@ -104,7 +110,7 @@ impl Bvh {
     }
 
     /// Whether `p` is inside any object.
-    pub fn contains(&self, p: glam::DVec3) -> bool {
+    pub fn contains(&self, p: DVec3) -> bool {
         self.objects().any(|o| o.inside(p))
     }
 
@@ -222,14 +228,27 @@ impl Bvh {
     }
 }
 
-/// Marks each box among `objects` with the sides of `reach` that one of its faces lies
-/// on, to within far more than the step a ray from its surface takes to its `tmin`: the
-/// sides rays from that face leave every object behind across. Other shapes touch a side
-/// of their box at a point or a line at most, where few rays start, and are not marked:
-/// their shadow rays would pay for the test and never gain. Nor are the sides where one of
-/// `planes` (axes and places) lies: a face on a floor is covered by it.
-fn mark_reach_sides(objects: &mut [Object], reach: &Aabb, planes: &[(usize, f64)]) {
-    let near = |a: f64, b: f64| (a - b).abs() <= 1e-6 * (1.0 + b.abs());
+/// Marks each box among `objects` with the ends of `spans` (how far every object reaches
+/// along x, y and z) that one of its faces lies on, to within far more than the step a
+/// ray from its surface takes to its `tmin`: the sides of the reach that rays from that
+/// face may leave every object behind across. The nearness is generous, since a mark only
+/// lets [`Bvh::left_behind`] be asked, which tells exactly on its own. Other shapes touch
+/// a side of their box at a point or a line at most, where few rays start, and are not
+/// marked: their shadow rays would pay for the test and never gain. Nor are the sides
+/// where one of the unbounded objects' `planes` lies: a face on a floor is covered by it.
+fn mark_reach_sides(objects: &mut [Object], spans: &[Span; 3], planes: &[Option<(DVec3, f64)>]) {
+    // Only a finite side is one to leave every object behind across; by this measure every
+    // place would be near an infinite one.
+    let near = |a: f64, b: f64| b.is_finite() && (a - b).abs() <= 1e-6 * (1.0 + b.abs());
+    // Where along each axis a plane lies: those whose normal is that axis, either way.
+    let places: [Vec<f64>; 3] = [DVec3::X, DVec3::Y, DVec3::Z].map(|axis| {
+        planes
+            .iter()
+            .map(|&plane| reach::along(&Aabb::EMPTY, [plane], axis))
+            .filter(|span| span.low == span.high)
+            .map(|span| span.low)
+            .collect()
+    });
     for object in objects {
         let Object::Leaf(leaf) = object else {
             continue;
@@ -242,58 +261,19 @@ fn mark_reach_sides(objects: &mut [Object], reach: &Aabb, planes: &[(usize, f64)
         let corners = leaf.frame_corners();
         let face_on = |axis: usize, side: f64| {
             corners.is_none_or(|c| c.iter().filter(|c| near(c[axis], side)).count() >= 4)
-                && !planes
-                    .iter()
-                    .any(|&(a, place)| a == axis && near(place, side))
+                && !places[axis].iter().any(|&place| near(place, side))
         };
         let mut sides = 0;
-        for axis in 0..3 {
-            let (low, high) = (reach.min[axis], reach.max[axis]);
-            if near(leaf.bounds.min[axis], low) && face_on(axis, low) {
+        for (axis, span) in spans.iter().enumerate() {
+            if near(leaf.bounds.min[axis], span.low) && face_on(axis, span.low) {
                 sides |= 1 << axis;
             }
-            if near(leaf.bounds.max[axis], high) && face_on(axis, high) {
+            if near(leaf.bounds.max[axis], span.high) && face_on(axis, span.high) {
                 sides |= 8 << axis;
             }
         }
         leaf.open_sides = leaf.open_sides.with_reach(sides);
     }
-}
-
-/// A box that holds the surfaces of the bounded objects (within `bounded`) and of the
-/// unbounded ones, `planes` along an axis (axes and places, see [`axis_plane`]), or
-/// `None` when some unbounded object is not such a plane: along a plane's axis, its
-/// place; along every other axis, and along all of them for `None`, everything.
-fn reach(bounded: Aabb, planes: Option<&[(usize, f64)]>) -> Aabb {
-    let Some(planes) = planes else {
-        return Aabb::INFINITE;
-    };
-    let mut reach = bounded;
-    for &(axis, place) in planes {
-        for a in 0..3 {
-            if a == axis {
-                reach.min[a] = reach.min[a].min(place);
-                reach.max[a] = reach.max[a].max(place);
-            } else {
-                reach.min[a] = f64::NEG_INFINITY;
-                reach.max[a] = f64::INFINITY;
-            }
-        }
-    }
-    reach
-}
-
-/// The axis and the place along it of a plane whose normal is that axis.
-fn axis_plane(object: &Object) -> Option<(usize, f64)> {
-    let Object::Leaf(leaf) = object else {
-        return None;
-    };
-    let (normal, offset) = leaf.flat_plane()?;
-    // Exactly an axis: a normal that only rounds to one (<1e-9, 1, 0>) tilts the plane
-    // away from its place far from the origin.
-    let axis =
-        (0..3).find(|&a| normal[a].abs() == 1.0 && (0..3).all(|b| b == a || normal[b] == 0.0))?;
-    Some((axis, offset * normal[axis]))
 }
 
 /// [`Object::nearest`] inside the query's interval ended at `tmax` (the searches keep
@@ -385,25 +365,34 @@ mod tests {
         // From the face at z = 0, which every object stands behind, away from them.
         let away = DVec3::new(0.1, 0.2, -1.0).normalize();
         assert!(bvh.left_behind(ALL, face, away, tmin));
+        // The reach is grown by the margin of `crate::reach`: a ray that starts within it
+        // of the face is left to the search.
+        assert!(bvh.left_behind(ALL, face, away, 1e-10));
+        assert!(!bvh.left_behind(ALL, face - DVec3::Z * 1e-12, away, 0.0));
         // Along the face or into it, the search decides; so it does from the other side.
         assert!(!bvh.left_behind(ALL, face, DVec3::X, tmin));
         assert!(!bvh.left_behind(ALL, face, DVec3::Z, tmin));
         assert!(!bvh.left_behind(ALL, DVec3::new(0.5, 0.5, 1.0), -DVec3::Z, tmin));
         // A floor reaches everywhere along x and z, and only to its height along y; the
         // box's face on it is not marked.
+        // The sides a floor makes infinite are not marked either: only the box's top is.
         let floored = world(&format!("{objects} plane {{ y, 0 pigment {{ rgb 1 }} }}"));
         assert!(floored.bvh.objects().all(|o| match o {
-            crate::object::Object::Leaf(leaf) => leaf.open_sides.reach() & 0b10 == 0,
+            crate::object::Object::Leaf(leaf) => leaf.open_sides.reach() & !0b01_0000 == 0,
             crate::object::Object::Csg(_) => true,
         }));
         let bvh = &world(&format!("{objects} plane {{ y, 0 pigment {{ rgb 1 }} }}")).bvh;
         assert!(!bvh.left_behind(ALL, face, away, tmin));
         assert!(bvh.left_behind(ALL, DVec3::new(0.5, 1.0, 0.5), DVec3::Y, tmin));
-        // A tilted plane reaches everywhere.
+        // A tilted plane reaches everywhere, and no side is marked.
         let bvh = &world(&format!(
             "{objects} plane {{ <0, 1, 0.1>, 0 pigment {{ rgb 1 }} }}"
         ))
         .bvh;
+        assert!(bvh.objects().all(|o| match o {
+            crate::object::Object::Leaf(leaf) => leaf.open_sides.reach() == 0,
+            crate::object::Object::Csg(_) => true,
+        }));
         assert!(!bvh.left_behind(ALL, DVec3::new(0.5, 1.0, 0.5), DVec3::Y, tmin));
     }
 

@@ -122,11 +122,11 @@ impl Tree {
     }
 
     /// Calls `visit` with the items of every leaf whose box the ray crosses within
-    /// `[tmin, tmax]` and whose items rays of `kind` (a [`RayKind::bit`](crate::ray::RayKind::bit),
-    /// or every bit for any ray) may see, the nearer child of each node first. `visit` returns the interval's
-    /// new end (the nearest hit so far, for a nearest-hit search), which culls the leaves
-    /// beyond it; an end before `tmin` stops the traversal (a search that found what it
-    /// wanted).
+    /// `[tmin, tmax]` and whose items rays of `kind` (a
+    /// [`RayKind::bit`](crate::ray::RayKind::bit), or every bit for any ray) may see, the
+    /// nearer child of each node first. `visit` returns the interval's new end (the
+    /// nearest hit so far, for a nearest-hit search), which culls the leaves beyond it; an
+    /// end before `tmin` stops the traversal (a search that found what it wanted).
     pub fn traverse(
         &self,
         ray: &Ray,

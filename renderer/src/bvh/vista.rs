@@ -55,7 +55,7 @@ pub struct Vista {
     to_frame: DMat3,
     /// The largest depth, either side of the origin, of any listed object: orthographic
     /// rays from beyond it are left to the hierarchy.
-    reach: f64,
+    deepest: f64,
     /// Where each cell's entries start in `entries`, row by row; one more at the end.
     starts: Vec<u32>,
     entries: Vec<Entry>,
@@ -98,12 +98,12 @@ impl Vista {
                 Some((index as u32, seen_from(object, origin, to_frame, parallel)?))
             })
             .collect();
-        let reach = seen
+        let deepest = seen
             .iter()
-            .map(|(_, seen)| seen.reach())
+            .map(|(_, seen)| seen.deepest())
             .fold(0.0, f64::max);
         if let Some(direction) = parallel
-            && !stays_in_its_cells(to_frame * direction, reach)
+            && !stays_in_its_cells(to_frame * direction, deepest)
         {
             return None;
         }
@@ -162,7 +162,7 @@ impl Vista {
             origin,
             parallel,
             to_frame,
-            reach,
+            deepest,
             starts,
             entries,
         })
@@ -189,7 +189,7 @@ impl Vista {
                     return None;
                 }
                 let o = self.to_frame * (ray.origin - self.origin);
-                if o.z.is_nan() || o.z.abs() > self.reach {
+                if o.z.is_nan() || o.z.abs() > self.deepest {
                     return None;
                 }
                 (o.x, o.y, o.z, (self.to_frame * direction).z)
@@ -213,10 +213,10 @@ impl Vista {
 }
 
 /// Whether rays along `v` (a direction in the camera's frame) from no deeper than the
-/// listed objects reach stay within the slack of their image position until they have
-/// passed every object: a direction tilted by rounding, not by the camera.
-fn stays_in_its_cells(v: DVec3, reach: f64) -> bool {
-    v.z > 0.0 && 2.0 * reach * (v.x.abs() + v.y.abs()) / v.z <= 0.5 * SLACK
+/// deepest listed object (`deepest`) stay within the slack of their image position until
+/// they have passed every object: a direction tilted by rounding, not by the camera.
+fn stays_in_its_cells(v: DVec3, deepest: f64) -> bool {
+    v.z > 0.0 && 2.0 * deepest * (v.x.abs() + v.y.abs()) / v.z <= 0.5 * SLACK
 }
 
 /// Where an object may show in the image: a box of image positions (x, y) and depths (z),
@@ -231,7 +231,7 @@ struct Seen {
 
 impl Seen {
     /// The largest depth, either side of the camera, at which the object may lie.
-    fn reach(&self) -> f64 {
+    fn deepest(&self) -> f64 {
         self.rect.min.z.abs().max(self.rect.max.z.abs())
     }
 
@@ -328,7 +328,7 @@ fn seen_from(
     if let Object::Leaf(leaf) = object
         && let Some(pieces) = leaf.piece_corners()
     {
-        let mut reach = Aabb::EMPTY;
+        let mut around = Aabb::EMPTY;
         let mut outlines = Vec::with_capacity(pieces.len());
         for corners in &pieces {
             let Some((rect, points)) = image(corners) else {
@@ -338,11 +338,11 @@ fn seen_from(
                 outlines.clear();
                 break;
             };
-            reach = reach.union(&rect);
+            around = around.union(&rect);
             outlines.push(convex_hull(&points));
         }
         if !outlines.is_empty() {
-            seen.rect = seen.rect.intersection(&reach);
+            seen.rect = seen.rect.intersection(&around);
             seen.pieces = outlines;
         }
     }

@@ -10,7 +10,15 @@ use glam::{DAffine3, DMat3, DVec2, DVec3};
 pub struct Polygon {
     /// Every edge of every outline, in the plane of the polygon.
     edges: Vec<(DVec2, DVec2)>,
-    bounds: Aabb,
+    /// The corners of the box around the outlines in their plane, where z is 0: kept as
+    /// two points of the plane, so that the shape stays within the room the `Shape` enum
+    /// has for the world normal beside them.
+    low: DVec2,
+    high: DVec2,
+    /// The unit normal in the world, which the leaf placing the shape works out once
+    /// (`Leaf::new`, through [`Polygon::place`]); zero until then, or where its frame
+    /// flattens the shape.
+    world_normal: DVec3,
 }
 
 impl Polygon {
@@ -44,8 +52,23 @@ impl Polygon {
                 hi = hi.max(*a);
             }
         }
-        let bounds = Aabb::new(lo.extend(0.0), hi.extend(0.0));
-        Some((Polygon { edges, bounds }, frame))
+        let polygon = Polygon {
+            edges,
+            low: lo,
+            high: hi,
+            world_normal: DVec3::ZERO,
+        };
+        Some((polygon, frame))
+    }
+
+    /// The unit normal in the world that [`Polygon::place`] kept, or zero.
+    pub fn world_normal(&self) -> DVec3 {
+        self.world_normal
+    }
+
+    /// Keeps the unit normal in the world of the leaf that places the shape.
+    pub fn place(&mut self, world_normal: DVec3) {
+        self.world_normal = world_normal;
     }
 
     pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
@@ -61,8 +84,7 @@ impl Polygon {
 
     /// The even-odd rule: a ray from `p` along +x crosses an odd number of edges.
     fn contains(&self, p: DVec2) -> bool {
-        let (lo, hi) = (self.bounds.min.truncate(), self.bounds.max.truncate());
-        if p.cmplt(lo).any() || p.cmpgt(hi).any() {
+        if p.cmplt(self.low).any() || p.cmpgt(self.high).any() {
             return false;
         }
         let mut odd = false;
@@ -80,7 +102,7 @@ impl Polygon {
     }
 
     pub fn bounds(&self) -> Aabb {
-        self.bounds
+        Aabb::new(self.low.extend(0.0), self.high.extend(0.0))
     }
 }
 

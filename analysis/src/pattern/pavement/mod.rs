@@ -219,6 +219,83 @@ impl Lattice {
     }
 }
 
+/// Where a corner of the cell that holds a square or triangle lies from it, and what that
+/// alone tells of the corner's terms there. It is the same for every square and for every
+/// triangle of one kind (see [`Lattice::kind`]), whatever the layout, so a layout works it
+/// out once per kind rather than for each square or triangle of its period: moving by
+/// lattice steps changes its positions by roundings only, far from deciding on which side
+/// of a lattice line a centre lies or whether a distance is within the ramp and
+/// [`UNREACHED`].
+#[derive(Debug, PartialEq)]
+struct CornerPlace {
+    /// The corner, in lattice steps from the square's or triangle's first vertex.
+    offset: (i32, i32),
+    /// The sector round the corner that holds the square or triangle.
+    sector: usize,
+    /// The lattice direction of the cell's edge from this corner to the next.
+    next: Option<usize>,
+    /// Which of the corner's terms (in the order of [`CornerTerms::skips`]) may come
+    /// within the ramp of some point of the square or triangle.
+    within: [bool; 4],
+}
+
+impl Lattice {
+    /// How many kinds of square or triangle [`Lattice::kind`] tells apart.
+    fn kinds(self) -> usize {
+        match self {
+            Lattice::Square => 1,
+            Lattice::Triangle => 2,
+            Lattice::Hexagon => 6,
+        }
+    }
+
+    /// The kind of the square or triangle whose first vertex is `(i, k)`, by which the
+    /// corners of the cells holding them lie alike: every square is of one kind; triangles
+    /// are of two, pointing up (0) or down (1); in hexagons, each of those comes in three,
+    /// by `(i - k) mod 3`, which tells which of the triangle's corners is its hexagon's
+    /// centre. The kind `2r + d` holds the triangle at `(r, 0)` pointing down when `d` is 1.
+    fn kind(self, (i, k): (i32, i32), down: bool) -> usize {
+        match self {
+            Lattice::Square => 0,
+            Lattice::Triangle => usize::from(down),
+            Lattice::Hexagon => 2 * (i - k).rem_euclid(3) as usize + usize::from(down),
+        }
+    }
+
+    /// The places of the corners of the cell holding the square or triangle whose first
+    /// vertex is `(i, k)`, in the cell's order.
+    fn corner_places(self, (i, k): (i32, i32), down: bool) -> Vec<CornerPlace> {
+        let (outline, count) = self.outline((i, k), down);
+        let outline = &outline[..count];
+        // The square's or triangle's centre tells each corner's sector.
+        let third = if down { 2.0 / 3.0 } else { 1.0 / 3.0 };
+        let centre = match self {
+            Lattice::Square => DVec2::new(f64::from(i) + 0.5, f64::from(k) + 0.5),
+            _ => {
+                let (a, b) = (f64::from(i) + third, f64::from(k) + third);
+                DVec2::new(a + 0.5 * b, ROOT3_2 * b)
+            }
+        };
+        let corners = self.corners((i, k), down);
+        let reach = self.ramp();
+        corners
+            .iter()
+            .enumerate()
+            .map(|(n, &corner)| {
+                let next = corners[(n + 1) % corners.len()];
+                let step = (next.0 - corner.0, next.1 - corner.1);
+                let lowest = self.lowest(self.position(corner), outline);
+                CornerPlace {
+                    offset: (corner.0 - i, corner.1 - k),
+                    sector: self.sector(self.across(centre - self.position(corner))),
+                    next: self.steps().iter().position(|&s| s == step),
+                    within: lowest.map(|lowest| lowest < reach + UNREACHED),
+                }
+            })
+            .collect()
+    }
+}
+
 /// One layout over its period, as what each corner of each cell of the period adds to
 /// a point's distance from the tile edges.
 struct Layout {
@@ -287,29 +364,19 @@ impl Layout {
             Lattice::Square => &[false],
             _ => &[false, true],
         };
-        let reach = lattice.ramp();
+        // The corners' places, worked out for one square or triangle of each kind.
+        let places: Vec<Vec<CornerPlace>> = (0..lattice.kinds())
+            .map(|kind| lattice.corner_places((kind as i32 / 2, 0), kind % 2 == 1))
+            .collect();
         let mut terms = Vec::new();
         let mut starts = vec![0];
         for k in 0..q {
             for i in 0..p {
                 for &down in shapes {
-                    let (outline, count) = lattice.outline((i, k), down);
-                    let outline = &outline[..count];
-                    // The square's or triangle's centre tells each corner's sector.
-                    let third = if down { 2.0 / 3.0 } else { 1.0 / 3.0 };
-                    let centre = match lattice {
-                        Lattice::Square => DVec2::new(f64::from(i) + 0.5, f64::from(k) + 0.5),
-                        _ => {
-                            let (a, b) = (f64::from(i) + third, f64::from(k) + third);
-                            DVec2::new(a + 0.5 * b, ROOT3_2 * b)
-                        }
-                    };
-                    let corners = lattice.corners((i, k), down);
-                    for (n, &corner) in corners.iter().enumerate() {
-                        let edges = mask(corner);
+                    for place in &places[lattice.kind((i, k), down)] {
+                        let edges = mask((i + place.offset.0, k + place.offset.1));
                         let mut counts = [false; 4];
-                        let across = lattice.across(centre - lattice.position(corner));
-                        let rule = CornerRule::new(steps.len(), edges, lattice.sector(across));
+                        let rule = lattice.rule(edges, place.sector);
                         match rule.angle {
                             // Where no tile edge leaves a vertex, it has no cell edge and
                             // no tile corner, and nothing counts.
@@ -322,20 +389,17 @@ impl Layout {
                             std::cmp::Ordering::Greater => counts[3] = true,
                         }
                         // The cell's own edge from this corner to the next.
-                        let next = corners[(n + 1) % corners.len()];
-                        let step = (next.0 - corner.0, next.1 - corner.1);
-                        if let Some(d) = steps.iter().position(|&s| s == step)
+                        if let Some(d) = place.next
                             && edges >> d & 1 != 0
                         {
                             counts[d % half] = true;
                         }
-                        let lowest = lattice.lowest(lattice.position(corner), outline);
-                        for (count, lowest) in counts.iter_mut().zip(lowest) {
-                            *count &= lowest < reach + UNREACHED;
+                        for (count, within) in counts.iter_mut().zip(place.within) {
+                            *count &= within;
                         }
                         if counts.contains(&true) {
                             terms.push(CornerTerms {
-                                offset: (corner.0 - i, corner.1 - k),
+                                offset: place.offset,
                                 skips: counts.map(|c| if c { 0.0 } else { f64::INFINITY }),
                             });
                         }
@@ -427,20 +491,69 @@ struct CornerRule {
 impl CornerRule {
     /// The rule at a vertex whose tile edges leave in the directions `mask` holds, of
     /// `count` lattice directions, for a point in `sector`.
-    fn new(count: usize, mask: u8, sector: usize) -> CornerRule {
-        let is_edge = |d: usize| mask >> d & 1 != 0;
-        let up = (1..=count)
-            .find(|m| is_edge((sector + m) % count))
-            .unwrap_or(count);
-        let down = (0..count)
-            .find(|m| is_edge((sector + count - m) % count))
-            .unwrap_or(count - up);
+    const fn new(count: usize, mask: u8, sector: usize) -> CornerRule {
+        // The sectors from this one up to the next tile edge, and down to the last one
+        // (round the whole turn when there is a single edge).
+        let mut up = 1;
+        while up < count && mask >> ((sector + up) % count) & 1 == 0 {
+            up += 1;
+        }
+        let mut down = 0;
+        while down < count && mask >> ((sector + count - down) % count) & 1 == 0 {
+            down += 1;
+        }
+        if down == count {
+            down = count - up;
+        }
         // The tile's angle here, in sectors: twice the sectors is the full turn.
         let sectors = up + down;
         CornerRule {
             a: ((sector + up) % (count / 2)) as u8,
             b: ((sector + count - down) % (count / 2)) as u8,
-            angle: (2 * sectors).cmp(&count),
+            angle: if 2 * sectors < count {
+                std::cmp::Ordering::Less
+            } else if 2 * sectors == count {
+                std::cmp::Ordering::Equal
+            } else {
+                std::cmp::Ordering::Greater
+            },
+        }
+    }
+
+    /// The rules of every mask (index) and sector of a lattice of `COUNT` directions and
+    /// `MASKS` masks of them, worked out when the program is compiled: a layout asks for
+    /// one at each corner of each cell of its period.
+    const fn table<const COUNT: usize, const MASKS: usize>() -> [[CornerRule; COUNT]; MASKS] {
+        let none = CornerRule {
+            a: 0,
+            b: 0,
+            angle: std::cmp::Ordering::Equal,
+        };
+        let mut table = [[none; COUNT]; MASKS];
+        let mut mask = 0;
+        while mask < MASKS {
+            let mut sector = 0;
+            while sector < COUNT {
+                table[mask][sector] = CornerRule::new(COUNT, mask as u8, sector);
+                sector += 1;
+            }
+            mask += 1;
+        }
+        table
+    }
+}
+
+/// [`CornerRule`]s round the square lattice's vertices and the triangle lattice's.
+const SQUARE_RULES: [[CornerRule; 4]; 16] = CornerRule::table();
+const TRIANGLE_RULES: [[CornerRule; 6]; 64] = CornerRule::table();
+
+impl Lattice {
+    /// The rule at a vertex whose tile edges leave in the directions `mask` holds, for a
+    /// point in `sector`.
+    fn rule(self, mask: u8, sector: usize) -> CornerRule {
+        match self {
+            Lattice::Square => SQUARE_RULES[usize::from(mask)][sector],
+            _ => TRIANGLE_RULES[usize::from(mask)][sector],
         }
     }
 }
@@ -451,13 +564,42 @@ fn layout(pavement: &Pavement) -> &'static Layout {
     static READY: [OnceLock<Layout>; LAYOUTS] = [const { OnceLock::new() }; LAYOUTS];
     let index = index(pavement);
     READY[index].get_or_init(|| {
-        let line = include_str!("pavements.txt")
-            .lines()
-            .filter(|l| l.starts_with("pavement "))
-            .nth(index)
-            .expect("pavements.txt has a line for every combination");
+        let line = TABLE[LINE_STARTS[index]..].lines().next().unwrap_or("");
         read_layout(line)
     })
+}
+
+/// The layouts, a line `pavement S T P period I K | edge flags...` each, in the order of
+/// [`index`], among comments.
+const TABLE: &str = include_str!("pavements.txt");
+
+/// Where each layout's line starts in [`TABLE`], found when the program is compiled, so
+/// that reading a layout does not scan the lines before it.
+const LINE_STARTS: [usize; LAYOUTS] = line_starts(TABLE.as_bytes());
+
+/// The starts of the lines of `text` that begin with `pavement `, which must be
+/// [`LAYOUTS`] of them.
+const fn line_starts(text: &[u8]) -> [usize; LAYOUTS] {
+    const HEAD: &[u8] = b"pavement ";
+    let mut starts = [0; LAYOUTS];
+    let (mut found, mut at) = (0, 0);
+    while at < text.len() {
+        let mut n = 0;
+        while n < HEAD.len() && at + n < text.len() && text[at + n] == HEAD[n] {
+            n += 1;
+        }
+        if n == HEAD.len() {
+            assert!(found < LAYOUTS, "pavements.txt has too many layouts");
+            starts[found] = at;
+            found += 1;
+        }
+        while at < text.len() && text[at] != b'\n' {
+            at += 1;
+        }
+        at += 1;
+    }
+    assert!(found == LAYOUTS, "pavements.txt lacks layouts");
+    starts
 }
 
 /// The layout a line of `pavements.txt` gives. The text is ours and fixed (a test reads
@@ -658,12 +800,13 @@ mod tests {
 
     #[test]
     fn the_table_has_every_combination() {
-        let lines: Vec<&str> = include_str!("pavements.txt")
+        let lines: Vec<&str> = TABLE
             .lines()
             .filter(|l| l.starts_with("pavement "))
             .collect();
         assert_eq!(lines.len(), LAYOUTS);
-        for line in &lines {
+        for (n, line) in lines.iter().enumerate() {
+            assert!(TABLE[LINE_STARTS[n]..].starts_with(line), "{line}");
             read_layout(line);
         }
         // Every combination finds its own line.
@@ -685,6 +828,24 @@ mod tests {
             for (sides, tiles, pattern) in [(3, 6, 12), (4, 6, 35), (6, 5, 22)] {
                 let v = at(sides, tiles, pattern, x, z);
                 assert!(v.is_nan() || (0.0..=1.0).contains(&v), "{v}");
+            }
+        }
+    }
+
+    /// The places of a cell's corners are the same from each square or triangle of a
+    /// kind, near the origin or far out, as a layout takes them to be.
+    #[test]
+    fn corner_places_are_the_same_for_a_kind_everywhere() {
+        for lattice in [Lattice::Square, Lattice::Triangle, Lattice::Hexagon] {
+            for kind in 0..lattice.kinds() {
+                let (first, down) = ((kind as i32 / 2, 0), kind % 2 == 1);
+                assert_eq!(lattice.kind(first, down), kind);
+                let places = lattice.corner_places(first, down);
+                for (di, dk) in [(3, 0), (-6, 3), (30_000, -15_000), (-3_000_000, 6_000_000)] {
+                    let moved = (first.0 + di, first.1 + dk);
+                    assert_eq!(lattice.kind(moved, down), kind);
+                    assert_eq!(lattice.corner_places(moved, down), places, "{moved:?}");
+                }
             }
         }
     }
