@@ -22,6 +22,11 @@ pub(crate) fn floor(x: f64) -> f64 {
     }
 }
 
+/// Below 2^51 in size, `x + ROUNDER` lies in [2^52, 2^53), where floats are the whole
+/// numbers: the sum is `x` rounded to a whole number, which its low bits count.
+pub(crate) const ROUNDS_BELOW: f64 = 2_251_799_813_685_248.0;
+pub(crate) const ROUNDER: f64 = 6_755_399_441_055_744.0;
+
 /// [`floor`] with the floor as an integer too, for the lattices whose cells index tables
 /// (the noise's, the pavement's). Natively both come from rounding additions: adding
 /// 1.5 * 2^52 to a float under 2^51 in size rounds it to a whole number, and leaves that
@@ -29,9 +34,6 @@ pub(crate) fn floor(x: f64) -> f64 {
 /// the floor is converted as `as i64` does (saturating, NaN to 0).
 #[inline(always)]
 pub(crate) fn floor_whole(x: f64) -> (f64, i64) {
-    // Below 2^51 in size the sum lies in [2^52, 2^53), where floats are the whole numbers.
-    const ROUNDS_BELOW: f64 = 2_251_799_813_685_248.0;
-    const ROUNDER: f64 = 6_755_399_441_055_744.0;
     if !cfg!(target_arch = "wasm32") && x.abs() < ROUNDS_BELOW {
         // Exact; the sign keeps -0.0 as it is and makes the nearest of a small negative
         // `x` -0.0, below which it is not (rounding never turns a sign but to zero).
