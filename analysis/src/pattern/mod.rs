@@ -322,7 +322,10 @@ pub fn evaluate_warped_each<const N: usize>(
     }
 }
 
-/// The pattern's value at a point that has been through its warps already.
+/// The pattern's value at a point that has been through its warps already. Inlined into
+/// its two callers, which hand it a point they have just stored: the call passed the point
+/// through memory, and natively loading it back stalled on the store.
+#[inline(always)]
 pub fn evaluate_warped(pattern: &Pattern, p: DVec3, facing: Option<&Facing>) -> PatternValue {
     // The gradient, the commonest pattern, without the frame of the function that knows
     // every pattern: the saved registers and stack of its heavier arms cost a gradient's
