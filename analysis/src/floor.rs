@@ -22,29 +22,31 @@ pub(crate) fn floor(x: f64) -> f64 {
     }
 }
 
+/// Below 2^51 in size, `x + ROUNDER` lies in [2^52, 2^53), where floats are the whole
+/// numbers: the sum is `x` rounded to a whole number, which its low bits count.
+pub(crate) const ROUNDS_BELOW: f64 = 2_251_799_813_685_248.0;
+pub(crate) const ROUNDER: f64 = 6_755_399_441_055_744.0;
+
 /// [`floor`] with the floor as an integer too, for the lattices whose cells index tables
-/// (the noise's, the pavement's). Natively the integer comes out of the rounding addition
-/// itself: adding 1.5 * 2^52 to a float under 2^51 in size leaves its nearest whole number
-/// in the sum's low bits, so that the integer is a subtraction of bit patterns instead of a
-/// conversion, which checks for overflow and NaN. Elsewhere, and for larger values and NaN,
+/// (the noise's, the pavement's). Natively both come from rounding additions: adding
+/// 1.5 * 2^52 to a float under 2^51 in size rounds it to a whole number, and leaves that
+/// number in the sum's low bits. Elsewhere, and for larger values and NaN,
 /// the floor is converted as `as i64` does (saturating, NaN to 0).
 #[inline(always)]
 pub(crate) fn floor_whole(x: f64) -> (f64, i64) {
-    // Below 2^51 in size the sum lies in [2^52, 2^53), where floats are the whole numbers.
-    const ROUNDS_BELOW: f64 = 2_251_799_813_685_248.0;
-    const ROUNDER: f64 = 6_755_399_441_055_744.0;
     if !cfg!(target_arch = "wasm32") && x.abs() < ROUNDS_BELOW {
-        let sum = x + ROUNDER;
-        // Both in one binade, where the bit patterns count whole numbers.
-        let whole = sum.to_bits().wrapping_sub(ROUNDER.to_bits()) as i64;
         // Exact; the sign keeps -0.0 as it is and makes the nearest of a small negative
         // `x` -0.0, below which it is not (rounding never turns a sign but to zero).
-        let nearest = (sum - ROUNDER).copysign(x);
-        if nearest > x {
-            (nearest - 1.0, whole - 1)
-        } else {
-            (nearest, whole)
-        }
+        let nearest = ((x + ROUNDER) - ROUNDER).copysign(x);
+        // A choice between two floats, which compiles to a compare and a mask: whether
+        // the nearest lies above `x` is a coin toss on a noise lattice, where a branch on
+        // it was mispredicted at every other coordinate.
+        let floor = if nearest > x { nearest - 1.0 } else { nearest };
+        // Both in one binade, where the bit patterns count whole numbers: the integer is
+        // a subtraction of bit patterns instead of a conversion, which checks for
+        // overflow and NaN, and needs no choice of its own.
+        let whole = (floor + ROUNDER).to_bits().wrapping_sub(ROUNDER.to_bits()) as i64;
+        (floor, whole)
     } else {
         let floor = floor(x);
         (floor, floor as i64)

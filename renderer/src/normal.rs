@@ -93,9 +93,9 @@ pub fn perturb(normal: &scene::Normal, at: &TexturePoint, n: DVec3) -> DVec3 {
             let p = at.for_pattern(pattern).world;
             let local = pattern.transform.inverse.transform_point3(p);
             let placement = normal.placement.as_deref();
-            let local_normal = (into_pattern_space(pattern, placement) * n).normalize_or_zero();
+            let local_normal = into_pattern_space(pattern, placement, n).normalize_or_zero();
             let bumped = crate::bump_map::perturb(pattern, *bump_size, local, local_normal);
-            (out_of_pattern_space(pattern, placement) * bumped).normalize_or_zero()
+            out_of_pattern_space(pattern, placement, bumped).normalize_or_zero()
         }
     };
     if perturbed == DVec3::ZERO || !perturbed.is_finite() {
@@ -140,11 +140,45 @@ fn mapped(pattern: &Pattern, map: &BlendMap<scene::Normal>, at: &TexturePoint, n
     (lower * (1.0 - t) + upper * t).normalize_or_zero()
 }
 
+/// A world normal `n` carried into the pattern's warped space (see
+/// [`into_pattern_space_matrix`]).
+#[inline]
+fn into_pattern_space(pattern: &Pattern, placement: Option<&Transform>, n: DVec3) -> DVec3 {
+    let linear = &pattern.transform.matrix.matrix3;
+    carry(pattern, placement, n, linear, into_pattern_space_matrix)
+}
+
+/// The way back from [`into_pattern_space`].
+#[inline]
+fn out_of_pattern_space(pattern: &Pattern, placement: Option<&Transform>, n: DVec3) -> DVec3 {
+    let linear = &pattern.transform.inverse.matrix3;
+    carry(pattern, placement, n, linear, out_of_pattern_space_matrix)
+}
+
+/// `n` times the matrix `matrix` builds. Without warps or a placement that matrix is the
+/// transpose of `linear`, and its product with `n` the dot products of `linear`'s columns
+/// with `n`: the same sums in the same order, without building and passing back a matrix
+/// twice for each bumped normal.
+#[inline(always)]
+fn carry(
+    pattern: &Pattern,
+    placement: Option<&Transform>,
+    n: DVec3,
+    linear: &DMat3,
+    matrix: fn(&Pattern, Option<&Transform>) -> DMat3,
+) -> DVec3 {
+    if placement.is_none() && pattern.warps.is_empty() {
+        linear.transpose_mul_vec3(n)
+    } else {
+        matrix(pattern, placement) * n
+    }
+}
+
 /// The matrix taking world normals into the pattern's warped space: the pattern's
 /// transform and each transformation among its warps, as POV-Ray carries normals through
 /// warps (the geometric warps leave normals alone). A uv-mapped normal's `placement`
 /// (the object's transformations, which do not move its pattern) turns it too.
-fn into_pattern_space(pattern: &Pattern, placement: Option<&Transform>) -> DMat3 {
+fn into_pattern_space_matrix(pattern: &Pattern, placement: Option<&Transform>) -> DMat3 {
     // The linear part of the pattern's transform, then the placement's, as
     // `Transform::then` composes them, without the translations and inverses it finds too.
     let linear = pattern.transform.matrix.matrix3;
@@ -161,8 +195,8 @@ fn into_pattern_space(pattern: &Pattern, placement: Option<&Transform>) -> DMat3
     m
 }
 
-/// The way back from [`into_pattern_space`].
-fn out_of_pattern_space(pattern: &Pattern, placement: Option<&Transform>) -> DMat3 {
+/// The way back from [`into_pattern_space_matrix`].
+fn out_of_pattern_space_matrix(pattern: &Pattern, placement: Option<&Transform>) -> DMat3 {
     // The inverse of the pattern's transform then the placement, as `Transform::then`
     // finds its linear part.
     let linear = pattern.transform.inverse.matrix3;
@@ -192,7 +226,7 @@ fn bumped(
     facing: Option<&Facing>,
 ) -> DVec3 {
     let local = pattern::warped(pattern, pattern.transform.inverse.transform_point3(p));
-    let local_normal = (into_pattern_space(pattern, placement) * n).normalize_or_zero();
+    let local_normal = into_pattern_space(pattern, placement, n).normalize_or_zero();
     // The bump patterns' own pushes take the point after the classic turbulence, as the
     // patterns' values do (the pyramid below gets it through the pattern's evaluation).
     let turbulent = match &pattern.turbulence {
@@ -234,7 +268,7 @@ fn bumped(
             local_normal + pyramid(pattern, slope_map, local, accuracy, facing) * amount
         }
     };
-    (out_of_pattern_space(pattern, placement) * bumped).normalize_or_zero()
+    out_of_pattern_space(pattern, placement, bumped).normalize_or_zero()
 }
 
 /// `facets`: the normal turned towards the nearest random cell point of the normal itself
@@ -268,7 +302,10 @@ fn pyramid(
     h: f64,
     facing: Option<&Facing>,
 ) -> DVec3 {
-    let values = pattern::evaluate_warped_each(pattern, PYRAMID.map(|c| warped + c * h), facing);
+    // Spelled out: `PYRAMID.map` was a call of its own.
+    let corner = |i: usize| warped + PYRAMID[i] * h;
+    let points = [corner(0), corner(1), corner(2), corner(3)];
+    let values = pattern::evaluate_warped_each(pattern, points, facing);
     PYRAMID
         .iter()
         .zip(values)

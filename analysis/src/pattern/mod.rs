@@ -278,7 +278,19 @@ pub fn all_transforms(pattern: &Pattern) -> Transform {
 /// pigment, texture and normal maps). The entries carry the pattern's transformations
 /// themselves (`all_transforms`), so the point is carried back out through them; without
 /// warps or a turbulence that moves it, that is `world` again, and `None` says so.
+///
+/// That answer, the usual one, is inlined into the callers (every map at every hit).
+#[inline]
 pub fn entry_point(pattern: &Pattern, world: DVec3) -> Option<DVec3> {
+    if pattern.warps.is_empty() && pattern.turbulence.is_none() {
+        None
+    } else {
+        moved_entry_point(pattern, world)
+    }
+}
+
+/// [`entry_point`] for a pattern with warps or a turbulence.
+fn moved_entry_point(pattern: &Pattern, world: DVec3) -> Option<DVec3> {
     let turbulence = pattern
         .turbulence
         .as_ref()
@@ -311,18 +323,27 @@ pub fn evaluate_warped_each<const N: usize>(
     match pattern.kind {
         PatternKind::Tiling(number) if pattern.turbulence.is_none() => {
             let raw = tiling::values(number, points);
-            // A loop rather than `map`, whose closure calls are not all inlined.
+            // Loops rather than `map`, whose closure calls are not all inlined.
             let mut values = [PatternValue::Blend(0.0); N];
             for (value, raw) in values.iter_mut().zip(raw) {
                 *value = PatternValue::Blend(shape(pattern, raw));
             }
             values
         }
-        _ => points.map(|p| evaluate_warped(pattern, p, facing)),
+        _ => {
+            let mut values = [PatternValue::Blend(0.0); N];
+            for (value, p) in values.iter_mut().zip(points) {
+                *value = evaluate_warped(pattern, p, facing);
+            }
+            values
+        }
     }
 }
 
-/// The pattern's value at a point that has been through its warps already.
+/// The pattern's value at a point that has been through its warps already. Inlined into
+/// its two callers, which hand it a point they have just stored: the call passed the point
+/// through memory, and natively loading it back stalled on the store.
+#[inline(always)]
 pub fn evaluate_warped(pattern: &Pattern, p: DVec3, facing: Option<&Facing>) -> PatternValue {
     // The gradient, the commonest pattern, without the frame of the function that knows
     // every pattern: the saved registers and stack of its heavier arms cost a gradient's

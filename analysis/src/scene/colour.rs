@@ -52,7 +52,9 @@ impl Colour {
         }
     }
 
-    /// Linear interpolation of all five components, as colour maps blend.
+    /// Linear interpolation of all five components, as colour maps blend. Inlined: the
+    /// renderer's maps call it at every hit, and the call cost half of what it does.
+    #[inline]
     pub fn lerp(self, other: Colour, t: f64) -> Colour {
         Colour {
             rgb: self.rgb.lerp(other.rgb, t),
