@@ -143,7 +143,10 @@ fn mapped(pattern: &Pattern, map: &BlendMap<scene::Normal>, at: &TexturePoint, n
 /// The matrix taking world normals into the pattern's warped space: the pattern's
 /// transform and each transformation among its warps, as POV-Ray carries normals through
 /// warps (the geometric warps leave normals alone). A uv-mapped normal's `placement`
-/// (the object's transformations, which do not move its pattern) turns it too.
+/// (the object's transformations, which do not move its pattern) turns it too. Inlined,
+/// as [`out_of_pattern_space`] is: every bumped normal takes both, and a call costs the
+/// interpreted plugin a frame.
+#[inline(always)]
 fn into_pattern_space(pattern: &Pattern, placement: Option<&Transform>) -> DMat3 {
     // The linear part of the pattern's transform, then the placement's, as
     // `Transform::then` composes them, without the translations and inverses it finds too.
@@ -162,6 +165,7 @@ fn into_pattern_space(pattern: &Pattern, placement: Option<&Transform>) -> DMat3
 }
 
 /// The way back from [`into_pattern_space`].
+#[inline(always)]
 fn out_of_pattern_space(pattern: &Pattern, placement: Option<&Transform>) -> DMat3 {
     // The inverse of the pattern's transform then the placement, as `Transform::then`
     // finds its linear part.

@@ -127,7 +127,9 @@ impl Gather {
         let mut area = near.nearest(p, self, hint, found);
         if area.is_none() {
             // The neighbourhood is taken anew around `p`, as wide as the last disc allows.
-            let last = scratch.last.unwrap_or(r2).min(r2);
+            // A comparison rather than `f32::min`, a call into libm in WebAssembly; the
+            // same value (`last` is never NaN).
+            let last = scratch.last.filter(|last| *last < r2).unwrap_or(r2);
             near.take(tree, p, NEIGHBOURHOOD_WIDTH * last.sqrt());
             area = near.nearest(p, self, hint, found);
         }
