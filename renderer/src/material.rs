@@ -234,7 +234,18 @@ pub enum Pigment {
 }
 
 impl Pigment {
+    /// The colour at `at`. A plain colour is answered inlined: most surfaces have one,
+    /// and the tracer asks at every hit.
+    #[inline(always)]
     pub fn colour_at(&self, at: &TexturePoint) -> Colour {
+        match self {
+            Pigment::Solid(c) => *c,
+            _ => self.patterned_colour_at(at),
+        }
+    }
+
+    /// [`Pigment::colour_at`] for a pigment that is not a plain colour.
+    fn patterned_colour_at(&self, at: &TexturePoint) -> Colour {
         match self {
             Pigment::Solid(c) => *c,
             Pigment::Pattern { pattern, map }
