@@ -79,7 +79,8 @@ fn locate<T>(map: &[(f64, T)], value: PatternValue) -> (usize, usize, f64) {
     }
 }
 
-/// A pattern's value at a texture point.
+/// A pattern's value at a texture point. Inlined, as [`pattern::evaluate_on`] is.
+#[inline(always)]
 fn value_at(pattern: &scene::Pattern, at: &TexturePoint) -> PatternValue {
     pattern::evaluate_on(pattern, at.world, at.facing.as_ref())
 }

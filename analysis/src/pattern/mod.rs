@@ -251,7 +251,10 @@ pub fn evaluate(pattern: &Pattern, world: DVec3) -> PatternValue {
 }
 
 /// The pattern's value at a world point, on the surface `facing` describes if there is
-/// one (which only `slope` and `aoi` look at).
+/// one (which only `slope` and `aoi` look at). Inlined: a pattern's carriage into its
+/// space and a call of [`evaluate_warped`] are all it does, and a patterned pigment asks
+/// at every hit.
+#[inline(always)]
 pub fn evaluate_on(pattern: &Pattern, world: DVec3, facing: Option<&Facing>) -> PatternValue {
     let local = pattern.transform.inverse.transform_point3(world);
     evaluate_warped(pattern, warped(pattern, local), facing)
