@@ -41,8 +41,9 @@ const LN_2_LO: f64 = 1.908_214_929_270_587_7e-10;
 /// √2, f = m - 1 and s = f/(2 + f) (|s| < 0.172): ln m = 2 atanh s = 2s + s·R,
 /// R = 2s²/3 + 2s⁴/5 + …, summed as f - f²/2 + s(f²/2 + R) so that its large part f is
 /// exact; R's terms up to s¹⁸ reach the last bit. ln 2 is split in two so that e times
-/// its first part is exact.
-#[inline]
+/// its first part is exact. Inlined by force, as [`series_pow`] is, so that the powers
+/// [`pow_inlined`] takes need no call.
+#[inline(always)]
 pub fn series_ln(x: f64) -> f64 {
     if !(x.is_normal() && x > 0.0) {
         return x.ln();
@@ -123,6 +124,13 @@ pub fn cbrt(x: f64) -> f64 {
 /// software routine, and highlights call it for every light at every hit.
 #[inline]
 pub fn pow(x: f64, e: f64) -> f64 {
+    pow_inlined(x, e)
+}
+
+/// [`pow`] inlined by force, for a caller's one hot power among others: a specular
+/// highlight's, which water and glass surfaces take at every hit.
+#[inline(always)]
+pub fn pow_inlined(x: f64, e: f64) -> f64 {
     if e.trunc() == e && (0.0..=256.0).contains(&e) {
         powi(x, e as u32)
     } else {
@@ -146,7 +154,7 @@ pub fn any_pow(x: f64, e: f64) -> f64 {
 /// (|e ln x| + 2) ulp of `powf`, the error of ln x growing with the exponent. Where the
 /// result would be near or beyond the range of floats, or is not a real number, the
 /// standard one answers.
-#[inline]
+#[inline(always)]
 pub fn series_pow(x: f64, e: f64) -> f64 {
     let y = e * series_ln(x);
     if y.abs() < 700.0 {

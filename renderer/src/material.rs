@@ -79,7 +79,8 @@ fn locate<T>(map: &[(f64, T)], value: PatternValue) -> (usize, usize, f64) {
     }
 }
 
-/// A pattern's value at a texture point.
+/// A pattern's value at a texture point. Inlined, as [`pattern::evaluate_on`] is.
+#[inline(always)]
 fn value_at(pattern: &scene::Pattern, at: &TexturePoint) -> PatternValue {
     pattern::evaluate_on(pattern, at.world, at.facing.as_ref())
 }
@@ -234,7 +235,18 @@ pub enum Pigment {
 }
 
 impl Pigment {
+    /// The colour at `at`. A plain colour is answered inlined: most surfaces have one,
+    /// and the tracer asks at every hit.
+    #[inline(always)]
     pub fn colour_at(&self, at: &TexturePoint) -> Colour {
+        match self {
+            Pigment::Solid(c) => *c,
+            _ => self.patterned_colour_at(at),
+        }
+    }
+
+    /// [`Pigment::colour_at`] for a pigment that is not a plain colour.
+    fn patterned_colour_at(&self, at: &TexturePoint) -> Colour {
         match self {
             Pigment::Solid(c) => *c,
             Pigment::Pattern { pattern, map }

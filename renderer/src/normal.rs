@@ -177,7 +177,10 @@ fn carry(
 /// The matrix taking world normals into the pattern's warped space: the pattern's
 /// transform and each transformation among its warps, as POV-Ray carries normals through
 /// warps (the geometric warps leave normals alone). A uv-mapped normal's `placement`
-/// (the object's transformations, which do not move its pattern) turns it too.
+/// (the object's transformations, which do not move its pattern) turns it too. Inlined,
+/// as [`out_of_pattern_space_matrix`] is: a normal under warps takes both, and a call
+/// costs the interpreted plugin a frame.
+#[inline(always)]
 fn into_pattern_space_matrix(pattern: &Pattern, placement: Option<&Transform>) -> DMat3 {
     // The linear part of the pattern's transform, then the placement's, as
     // `Transform::then` composes them, without the translations and inverses it finds too.
@@ -196,6 +199,7 @@ fn into_pattern_space_matrix(pattern: &Pattern, placement: Option<&Transform>) -
 }
 
 /// The way back from [`into_pattern_space_matrix`].
+#[inline(always)]
 fn out_of_pattern_space_matrix(pattern: &Pattern, placement: Option<&Transform>) -> DMat3 {
     // The inverse of the pattern's transform then the placement, as `Transform::then`
     // finds its linear part.

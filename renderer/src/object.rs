@@ -272,6 +272,9 @@ impl Leaf {
     /// Where the textures are evaluated at a point of the surface that `ray` reached: the
     /// shape gives its uv coordinates, and its normal turned towards the ray, when a
     /// pattern needs them.
+    /// Inlined: the tracer asks at every hit it shades, and for the common shape with
+    /// neither uv nor facing patterns the call cost more than the answer.
+    #[inline(always)]
     pub fn texture_point(&self, p: DVec3, part: u32, ray: &Ray) -> TexturePoint {
         let mut at = TexturePoint::in_space(p);
         if self.uses_uv
@@ -396,19 +399,24 @@ impl Leaf {
 
     /// The nearest crossing of `ray` inside `(tmin, tmax)`. Inlined into the searches,
     /// which call it for every leaf a ray reaches: a call costs the interpreted plugin as
-    /// much as a box test.
+    /// much as a box test. So are a plane's test and a disc's, a few operations each,
+    /// which the shapes' dispatch called out of line: a floor and a water surface are
+    /// tested by several rays at every sample.
     #[inline(always)]
     fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<crate::shapes::Root> {
         // Without a transformation the shape is asked along the ray itself: a copy of
         // it, as `local_ray` gives, cost every search of such a leaf in WebAssembly a
         // dozen loads and stores.
         let Some(to_local) = &self.to_local else {
+            if let Shape::Plane(plane) = &self.shape {
+                return plane.first_hit(ray, tmin, tmax);
+            }
             return self.shape.first_hit(ray, tmin, tmax);
         };
-        if let Shape::Torus(torus) = &self.shape
-            && !torus.may_meet(to_local, ray, tmin, tmax)
-        {
-            return None;
+        match &self.shape {
+            Shape::Disc(disc) => return disc.first_hit(&self.local_ray(ray), tmin, tmax),
+            Shape::Torus(torus) if !torus.may_meet(to_local, ray, tmin, tmax) => return None,
+            _ => {}
         }
         self.shape.first_hit(&self.local_ray(ray), tmin, tmax)
     }

@@ -571,17 +571,18 @@ impl<'w> Tracer<'w> {
         if facing(normal, incoming.direction, finish, double_illuminate).is_none() {
             return DVec3::ZERO;
         }
-        let light_colour = match arrival {
-            _ if light.arrives_whole => incoming.colour,
-            Some(entry) => match self.arrivals[entry] {
-                Some(colour) => colour,
-                None => {
-                    let colour = self.arriving(light, p, &incoming, leaf);
+        // One place that finds the arrival, so that its common case is inlined once.
+        let light_colour = if light.arrives_whole {
+            incoming.colour
+        } else {
+            let kept = arrival.and_then(|entry| self.arrivals[entry]);
+            kept.unwrap_or_else(|| {
+                let colour = self.arriving(light, p, &incoming, leaf);
+                if let Some(entry) = arrival {
                     self.arrivals[entry] = Some(colour);
-                    colour
                 }
-            },
-            None => self.arriving(light, p, &incoming, leaf),
+                colour
+            })
         };
         // Negative lights darken, as in POV-Ray: only a light too weak either way is skipped.
         if light_colour.abs().max_element() < 1e-10 {
@@ -597,7 +598,11 @@ impl<'w> Tracer<'w> {
     }
 
     /// The light of `light` that reaches `p`, on the surface of `surface`, past the
-    /// shadow-casting objects, through its projection object and the atmosphere.
+    /// shadow-casting objects, through its projection object and the atmosphere. Light
+    /// that is sure to meet nothing (see [`Self::unobstructed`]) is answered inlined, as
+    /// it is at every point of a surface open to its lights; the rest in
+    /// [`Self::arriving_past`].
+    #[inline(always)]
     pub(crate) fn arriving(
         &mut self,
         light: &Light,
@@ -606,12 +611,33 @@ impl<'w> Tracer<'w> {
         surface: &'w Leaf,
     ) -> DVec3 {
         let world = self.world;
-        let mut colour = if light.shadowless || !world.quality.shadows {
+        let shadows = !light.shadowless && world.quality.shadows;
+        let clear = shadows && self.unobstructed(light, p, incoming, surface);
+        if clear && !(light.media_attenuation && world.atmosphere.is_some()) {
+            return incoming.colour;
+        }
+        self.arriving_past(light, p, incoming, surface, shadows, clear)
+    }
+
+    /// [`Self::arriving`] for light that casts no shadows (`shadows` false), meets nothing
+    /// (`clear`) but goes through the atmosphere, or may meet something.
+    #[inline(never)]
+    fn arriving_past(
+        &mut self,
+        light: &Light,
+        p: DVec3,
+        incoming: &Incoming,
+        surface: &'w Leaf,
+        shadows: bool,
+        clear: bool,
+    ) -> DVec3 {
+        let world = self.world;
+        let mut colour = if !shadows {
             match self.projected_reach(light, p, incoming.direction, incoming.distance) {
                 Some(_) => incoming.colour,
                 None => DVec3::ZERO,
             }
-        } else if self.unobstructed(light, p, incoming, surface) {
+        } else if clear {
             incoming.colour
         } else {
             // Inside containers of media the shadow ray crosses their media up to where it
@@ -646,7 +672,9 @@ impl<'w> Tracer<'w> {
     /// not through media, that comes from a side of the flat surface's plane no object
     /// reaches (see [`crate::open_sides`]), or across a side of the box of every object that
     /// the surface lies on (see [`crate::bvh::Bvh::left_behind`]). [`Self::unshadowed`]
-    /// would search and find nothing.
+    /// would search and find nothing. Inlined into [`Self::arriving`], which asks it for
+    /// every light at every point shaded.
+    #[inline(always)]
     fn unobstructed(
         &mut self,
         light: &Light,
@@ -733,7 +761,8 @@ impl<'w> Tracer<'w> {
             if len > 0.0 {
                 let cos = normal.dot(halfway) / len;
                 if cos > 0.0 {
-                    let intensity = finish.specular * fast_math::pow(cos, 1.0 / finish.roughness);
+                    let intensity =
+                        finish.specular * fast_math::pow_inlined(cos, 1.0 / finish.roughness);
                     let ndotl = halfway.dot(lit.direction) / len;
                     let tint = metallic_tint(finish.metallic, surface, ndotl);
                     colour += lit.colour * tint * intensity;
@@ -1006,7 +1035,9 @@ impl<'w> Tracer<'w> {
     /// [`Self::trace`] for a ray leaving the surface of `leaf`: the background at once
     /// when the surface is flat and the ray goes into a side of its plane no object
     /// reaches (see [`crate::open_sides`]), as the search would find, unless fog or media
-    /// lie along it.
+    /// lie along it. Inlined: a surface that reflects asks at every hit, and a call costs
+    /// the interpreted plugin a frame.
+    #[inline(always)]
     fn trace_leaving(
         &mut self,
         leaf: &'w Leaf,

@@ -251,7 +251,10 @@ pub fn evaluate(pattern: &Pattern, world: DVec3) -> PatternValue {
 }
 
 /// The pattern's value at a world point, on the surface `facing` describes if there is
-/// one (which only `slope` and `aoi` look at).
+/// one (which only `slope` and `aoi` look at). Inlined: a pattern's carriage into its
+/// space and a call of [`evaluate_warped`] are all it does, and a patterned pigment asks
+/// at every hit.
+#[inline(always)]
 pub fn evaluate_on(pattern: &Pattern, world: DVec3, facing: Option<&Facing>) -> PatternValue {
     let local = pattern.transform.inverse.transform_point3(world);
     evaluate_warped(pattern, warped(pattern, local), facing)
@@ -307,7 +310,13 @@ fn moved_entry_point(pattern: &Pattern, world: DVec3) -> Option<DVec3> {
 }
 
 /// A point of pattern space carried through the pattern's warps, the last written first.
+/// Inlined, with the common pattern without warps answered at once: a bumped normal asks
+/// at every hit, and the call cost the interpreted plugin more than the empty loop.
+#[inline(always)]
 pub fn warped(pattern: &Pattern, local: DVec3) -> DVec3 {
+    if pattern.warps.is_empty() {
+        return local;
+    }
     warp::through_all(&pattern.warps, local)
 }
 
@@ -345,19 +354,22 @@ pub fn evaluate_warped_each<const N: usize>(
 /// through memory, and natively loading it back stalled on the store.
 #[inline(always)]
 pub fn evaluate_warped(pattern: &Pattern, p: DVec3, facing: Option<&Facing>) -> PatternValue {
-    // The gradient, the commonest pattern, without the frame of the function that knows
-    // every pattern: the saved registers and stack of its heavier arms cost a gradient's
-    // value twice what the value itself does.
-    if let (PatternKind::Gradient(unit), None) = (&pattern.kind, &pattern.turbulence) {
-        // Along a zero vector 0 everywhere, as `blend_value` gives.
-        let raw = if *unit != DVec3::ZERO {
-            p.dot(*unit)
-        } else {
-            0.0
-        };
-        return PatternValue::Blend(shape(pattern, raw));
+    // The gradient, the commonest pattern, and the checker, the commonest floor, without
+    // the frame of the function that knows every pattern: the saved registers and stack of
+    // its heavier arms cost a gradient's value twice what the value itself does.
+    match (&pattern.kind, &pattern.turbulence) {
+        (PatternKind::Gradient(unit), None) => {
+            // Along a zero vector 0 everywhere, as `blend_value` gives.
+            let raw = if *unit != DVec3::ZERO {
+                p.dot(*unit)
+            } else {
+                0.0
+            };
+            PatternValue::Blend(shape(pattern, raw))
+        }
+        (PatternKind::Checker, None) => checker(p),
+        _ => evaluate_any(pattern, p, facing),
     }
-    evaluate_any(pattern, p, facing)
 }
 
 /// [`evaluate_warped`] for every pattern.
@@ -377,11 +389,7 @@ fn evaluate_any(pattern: &Pattern, p: DVec3, facing: Option<&Facing>) -> Pattern
         None => 0.0,
     };
     let raw = match &pattern.kind {
-        PatternKind::Checker => {
-            let q = turbulent(p) + DVec3::splat(1e-9);
-            let sum = floor(q.x) + floor(q.y) + floor(q.z);
-            return PatternValue::Block(usize::from(is_odd(sum)));
-        }
+        PatternKind::Checker => return checker(turbulent(p)),
         PatternKind::Brick { size, mortar } => {
             return PatternValue::Block(blocks::brick(turbulent(p), *size, *mortar));
         }
@@ -435,6 +443,14 @@ fn evaluate_any(pattern: &Pattern, p: DVec3, facing: Option<&Facing>) -> Pattern
         kind => blend_value(kind, turbulent(p), generator),
     };
     PatternValue::Blend(shape(pattern, raw))
+}
+
+/// `checker`'s block at `p`: which of the unit cubes, alternating, holds it.
+#[inline(always)]
+fn checker(p: DVec3) -> PatternValue {
+    let q = p + DVec3::splat(1e-9);
+    let sum = floor(q.x) + floor(q.y) + floor(q.z);
+    PatternValue::Block(usize::from(is_odd(sum)))
 }
 
 /// Raw values of the blend patterns that take no special turbulence, the noise patterns'

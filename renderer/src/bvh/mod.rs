@@ -143,13 +143,6 @@ impl Bvh {
         {
             return self.nearest_listed(q, scratch, &cell);
         }
-        self.searched(q, scratch)
-    }
-
-    /// [`Bvh::nearest`] by the hierarchy: kept out of line, so that the interpreted
-    /// plugin's calls for camera rays, which the vista serves, set up no room for it.
-    #[inline(never)]
-    fn searched<'a>(&'a self, q: &Query, scratch: &mut Vec<Hit<'a>>) -> Option<Hit<'a>> {
         self.search(q, scratch, false)
     }
 
@@ -189,8 +182,11 @@ impl Bvh {
 
     /// The nearest crossing inside the query's interval or, with `opaque_ends`, the first
     /// crossing of an opaque leaf found. Such a search cannot narrow the interval to the
-    /// nearest transparent crossing, since an opaque one may lie beyond it.
-    #[inline]
+    /// nearest transparent crossing, since an opaque one may lie beyond it. Kept out of
+    /// line, so that the interpreted plugin's calls of [`Bvh::nearest`] for camera rays,
+    /// which the vista serves, set up no room for it; and called by `nearest` itself,
+    /// not through a function of its own, which cost every other ray a second call.
+    #[inline(never)]
     fn search<'a>(
         &'a self,
         q: &Query,

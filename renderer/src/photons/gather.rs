@@ -70,7 +70,9 @@ impl Neighbourhood {
     /// [`KdTree::nearest`] for `gather` among the photons held, when they settle it: when
     /// every photon it keeps, or its whole radius if it keeps fewer than `gather.max`, lies
     /// within the part of the neighbourhood that surrounds `p`. The margin covers the
-    /// rounding of distances. `hint` as for [`KdTree::nearest`].
+    /// rounding of distances. `hint` as for [`KdTree::nearest`]. Inlined into the one
+    /// place that asks, at every gathering: a call costs the interpreted plugin a frame.
+    #[inline(always)]
     fn nearest(
         &self,
         p: Vec3,
@@ -124,13 +126,21 @@ impl Gather {
         let near = &mut scratch.near;
         // A neighbour's disc, a little widened, usually holds as many photons.
         let hint = scratch.last.map(|d2| NEIGHBOUR_DISC_WIDENING * d2);
-        let mut area = near.nearest(p, self, hint, found);
-        if area.is_none() {
+        // The neighbourhood as it is, then, when it does not settle the search, taken
+        // anew: one place that asks it, so that its search is inlined once.
+        let mut taken = false;
+        let area = loop {
+            let area = near.nearest(p, self, hint, found);
+            if area.is_some() || taken {
+                break area;
+            }
             // The neighbourhood is taken anew around `p`, as wide as the last disc allows.
-            let last = scratch.last.unwrap_or(r2).min(r2);
+            // A comparison rather than `f32::min`, a call into libm in WebAssembly; the
+            // same value (`last` is never NaN).
+            let last = scratch.last.filter(|last| *last < r2).unwrap_or(r2);
             near.take(tree, p, NEIGHBOURHOOD_WIDTH * last.sqrt());
-            area = near.nearest(p, self, hint, found);
-        }
+            taken = true;
+        };
         let area = area.unwrap_or_else(|| tree.nearest(p, self.max, r2, hint, found));
         scratch.last = (found.len() == self.max).then_some(area);
         if found.len() >= self.min {

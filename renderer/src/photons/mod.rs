@@ -22,6 +22,7 @@ mod shoot;
 
 use crate::bounds::Aabb;
 use crate::build::BuildError;
+use crate::fast_math;
 use crate::object::Object;
 use crate::tracer::World;
 use analysis::scene::{
@@ -296,7 +297,8 @@ impl PhotonMap {
             let Some(direction) = direction.try_normalize() else {
                 continue;
             };
-            let cos = f64::from(direction.dot(normal).abs()).max(0.1);
+            // `fast_math::max`, the same value without a call into libm.
+            let cos = fast_math::max(f64::from(direction.dot(normal).abs()), 0.1);
             lights.push((power.as_dvec3() / (area * cos), direction.as_dvec3()));
         }
     }

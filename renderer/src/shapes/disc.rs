@@ -42,11 +42,13 @@ impl Disc {
 
     /// The crossing in `(tmin, tmax)`, without the list of crossings: camera, secondary
     /// and shadow rays test a disc this way, and the plugin paid for setting up the list.
+    #[inline(always)]
     pub fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<Root> {
         super::nearest_in(&[self.crossing(ray)?], tmin, tmax).map(|t| Root { t, part: 0 })
     }
 
     /// Where the ray crosses the plane of the disc, if it does so within the ring.
+    #[inline(always)]
     fn crossing(&self, ray: &Ray) -> Option<f64> {
         if ray.direction.z == 0.0 {
             return None;

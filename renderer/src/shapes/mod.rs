@@ -116,6 +116,7 @@ impl Default for Roots {
 
 /// The first of `ts`, given in increasing order, that is a finite parameter inside
 /// `(tmin, tmax)`: the crossing [`Roots`] would keep and a nearest-hit search would take.
+#[inline(always)]
 fn nearest_in(ts: &[f64], tmin: f64, tmax: f64) -> Option<f64> {
     ts.iter()
         .copied()

@@ -42,10 +42,12 @@ impl Plane {
     }
 
     /// The crossing in `(tmin, tmax)`, without a list of crossings around it.
+    #[inline(always)]
     pub fn first_hit(&self, ray: &Ray, tmin: f64, tmax: f64) -> Option<Root> {
         super::nearest_in(&[self.crossing(ray)?], tmin, tmax).map(|t| Root { t, part: 0 })
     }
 
+    #[inline(always)]
     pub(super) fn crossing(&self, ray: &Ray) -> Option<f64> {
         let denom = self.normal.dot(ray.direction);
         (denom != 0.0).then(|| (self.distance - self.normal.dot(ray.origin)) / denom)
