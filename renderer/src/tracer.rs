@@ -191,6 +191,16 @@ impl<'w> Tracer<'w> {
         }
     }
 
+    /// A fresh tracer inside the interiors the current ray is in, walking the radiosity
+    /// computation with `walk`: for another thread to trace some of a gather's rays.
+    pub(crate) fn copy_with(&self, walk: crate::radiosity::Walk<'w>) -> Tracer<'w> {
+        Tracer {
+            inside: self.inside.clone(),
+            radiosity: Some(walk),
+            ..Tracer::new(self.world)
+        }
+    }
+
     fn tolerance(&self, p: DVec3) -> f64 {
         self.world.tolerance(p)
     }

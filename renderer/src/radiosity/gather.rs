@@ -5,11 +5,12 @@
 use super::Radiosity;
 use super::cache::{self, Cache, Sample};
 use crate::colour;
-use crate::object::Leaf;
+use crate::object::{Hit, Leaf};
 use crate::ray::{Ray, RayKind};
 use crate::tracer::{Tracer, greyscale, hash3};
 use analysis::scene::Finish;
 use glam::DVec3;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// How much looser the error bound may grow with each diffuse bounce.
 const LOOSEST_PER_BOUNCE: f64 = 4.0;
@@ -32,10 +33,12 @@ pub enum Phase {
 enum Caches<'w> {
     Reading(&'w [Cache]),
     /// The pretrace's: the samples of the rounds before, read only, and this unit's own
-    /// new ones, kept apart until the round ends.
+    /// new ones, kept apart until the round ends; and how many of the round's units have
+    /// finished, leaving their threads free to help the others.
     Filling {
         shared: &'w [Cache],
         own: Vec<Cache>,
+        finished: &'w AtomicUsize,
     },
 }
 
@@ -57,6 +60,12 @@ pub struct Walk<'w> {
     /// The lowest coverage a camera-path lookup found since the pretrace last reset it,
     /// for the adaptive pretrace.
     pub(super) weakest: f64,
+    /// Whether this walk's last gather shared with another thread took no samples deeper
+    /// down, so that its next is worth sharing (see `split`).
+    pub(super) quiet: bool,
+    /// Whether this walk is a copy tracing another walk's share of a gather, whose own
+    /// gathers stay on its thread.
+    copy: bool,
 }
 
 impl<'w> Walk<'w> {
@@ -70,10 +79,19 @@ impl<'w> Walk<'w> {
     }
 
     /// For a unit of the pretrace: reads the samples of `shared` and keeps its own new
-    /// ones apart.
-    pub(super) fn filling(radiosity: &'w Radiosity, shared: &'w [Cache]) -> Walk<'w> {
+    /// ones apart; `finished` counts the round's units that have finished.
+    pub(super) fn filling(
+        radiosity: &'w Radiosity,
+        shared: &'w [Cache],
+        finished: &'w AtomicUsize,
+    ) -> Walk<'w> {
         let own = radiosity.empty_caches();
-        Walk::new(radiosity, Caches::Filling { shared, own }, Phase::Pretrace)
+        let caches = Caches::Filling {
+            shared,
+            own,
+            finished,
+        };
+        Walk::new(radiosity, caches, Phase::Pretrace)
     }
 
     fn new(radiosity: &'w Radiosity, caches: Caches<'w>, phase: Phase) -> Walk<'w> {
@@ -86,6 +104,8 @@ impl<'w> Walk<'w> {
             gatherer_distance: 0.0,
             path_weight: 1.0,
             weakest: f64::INFINITY,
+            quiet: true,
+            copy: false,
         }
     }
 
@@ -97,12 +117,79 @@ impl<'w> Walk<'w> {
         }
     }
 
+    /// Whether a unit of the round has finished, so that a thread may be free to share
+    /// this walk's gathers.
+    fn may_split(&self) -> bool {
+        !self.copy
+            && matches!(&self.caches, Caches::Filling { finished, .. }
+                if finished.load(Ordering::Relaxed) > 0 && crate::parallel::threads() > 1)
+    }
+
+    /// A copy of this walk for another thread to go on with the current gather's rays:
+    /// it reads the samples this walk reads, and keeps those it takes apart. Only the
+    /// depths the rays reach are copied.
+    pub(super) fn fork(&self) -> Walk<'w> {
+        let caches = match &self.caches {
+            Caches::Reading(caches) => Caches::Reading(caches),
+            Caches::Filling {
+                shared,
+                own,
+                finished,
+            } => {
+                let mut copy = self.radiosity.empty_caches();
+                for (copy, own) in copy.iter_mut().zip(own).skip(self.bounce as usize) {
+                    copy.clone_from(own);
+                }
+                Caches::Filling {
+                    shared,
+                    own: copy,
+                    finished,
+                }
+            }
+        };
+        Walk {
+            caches,
+            copy: true,
+            ..*self
+        }
+    }
+
+    /// How many samples this walk has taken at each depth.
+    pub(super) fn own_lengths(&self) -> Vec<usize> {
+        match &self.caches {
+            Caches::Filling { own, .. } => own.iter().map(|c| c.samples().len()).collect(),
+            Caches::Reading(_) => Vec::new(),
+        }
+    }
+
+    /// How many samples this walk has taken.
+    pub(super) fn own_count(&self) -> usize {
+        match &self.caches {
+            Caches::Filling { own, .. } => own.iter().map(|c| c.samples().len()).sum(),
+            Caches::Reading(_) => 0,
+        }
+    }
+
+    /// Takes the samples `fork` took past `lengths` (this walk's at the fork), in the
+    /// order it took them, as though this walk had.
+    pub(super) fn adopt(&mut self, fork: Walk<'w>, lengths: &[usize]) {
+        if let (Caches::Filling { own, .. }, Caches::Filling { own: theirs, .. }) =
+            (&mut self.caches, fork.caches)
+        {
+            for ((own, theirs), &length) in own.iter_mut().zip(&theirs).zip(lengths) {
+                for sample in theirs.samples().iter().skip(length) {
+                    own.insert(*sample);
+                }
+            }
+        }
+    }
+
     /// Calls `f` with the caches of `bounce` that lookups read, as one.
     fn with_layers<T>(&self, bounce: u32, f: impl FnOnce(&[&Cache]) -> T) -> T {
         let b = bounce as usize;
         match &self.caches {
             Caches::Reading(c) => f(&[&c[b]]),
-            Caches::Filling { shared, own } => f(&[&shared[b], &own[b]]),
+            Caches::Filling { shared, own, .. } => f(&[&shared[b], &own[b]]),
         }
     }
 
@@ -303,48 +390,53 @@ impl<'w> Tracer<'w> {
         walk.gatherer_distance = eye_distance;
         walk.path_weight *= reflectance.abs();
         let key = hash3(p, walk.bounce as i32, 0);
-
-        // Rays below radiosity's own adc_bailout are not followed: the tracer compares
-        // weights with the scene's, so the weight starts at the ratio of the two.
-        let weight = (world.adc_bailout / settings.adc_bailout).min(1.0);
+        // A gather whose rays meet other surfaces in the order they are shaded, by
+        // importance, or whose tracer keeps photons found near its last points, stays on
+        // this thread.
+        let split = walk.may_split() && !radiosity.uses_importance && world.photons.is_none();
         let (t, b) = n.any_orthonormal_pair();
+        let rays = GatherRays {
+            origin: p,
+            axes: [t, b, n],
+            level,
+            // Rays below radiosity's own adc_bailout are not followed: the tracer compares
+            // weights with the scene's, so the weight starts at the ratio of the two.
+            weight: (world.adc_bailout / settings.adc_bailout).min(1.0),
+            max_sample: settings.max_sample,
+            sampling: walk.bounce < settings.recursion_limit,
+        };
         let count = radiosity.directions.count();
-        let mut inverse_distances = 0.0;
-        let mut total = DVec3::ZERO;
+        let mut sums = Sums::default();
         let mut shares = ObjectShares::default();
-        for (i, d) in radiosity.directions.gather(key).enumerate() {
-            let ray = Ray::new(p, t * d.x + b * d.y + n * d.z);
-            let Some(hit) = self.first_hit(&ray, RayKind::Radiosity) else {
-                let sky = self.missed(&ray, RayKind::Radiosity);
-                let sky = self.through_media(&ray, f64::INFINITY, 0, sky);
-                total += limit(sky.colour, settings.max_sample);
-                continue;
-            };
-            inverse_distances += 1.0 / hit.t;
-            let object = if radiosity.uses_importance {
+        if split {
+            let directions: Vec<DVec3> = radiosity.directions.gather(key).collect();
+            let mut gathered = Vec::with_capacity(count);
+            self.gather_shared(&rays, &directions, &mut gathered);
+            gathered.into_iter().for_each(|g| sums.add(g));
+        } else if radiosity.uses_importance {
+            for (i, d) in radiosity.directions.gather(key).enumerate() {
+                let ray = rays.ray(d);
+                let Some(hit) = self.first_hit(&ray, RayKind::Radiosity) else {
+                    sums.total += self.sky_light(&rays, &ray);
+                    continue;
+                };
+                sums.inverse_distances += 1.0 / hit.t;
                 let share = hit.leaf.importance * count as f64;
-                match shares.meet(hit.leaf, i, share) {
-                    Some(object) => Some(object),
-                    None => continue,
+                if let Some(object) = shares.meet(hit.leaf, i, share) {
+                    let light = self.hit_light(&rays, &ray, &hit);
+                    shares.add(object, light);
                 }
-            } else {
-                None
-            };
-            let light = if level < world.max_trace_level {
-                let shaded = self.shade(&ray, &hit, level + 1, weight);
-                limit(
-                    self.through_media(&ray, hit.t, hit.leaf.light_set, shaded)
-                        .colour,
-                    settings.max_sample,
-                )
-            } else {
-                DVec3::ZERO
-            };
-            match object {
-                Some(object) => shares.add(object, light),
-                None => total += light,
+            }
+        } else {
+            for d in radiosity.directions.gather(key) {
+                let gathered = self.gather_ray(&rays, d);
+                sums.add(gathered);
             }
         }
+        let Sums {
+            inverse_distances,
+            total,
+        } = sums;
 
         if let Some(walk) = &mut self.radiosity {
             walk.bounce -= 1;
@@ -370,6 +462,86 @@ impl<'w> Tracer<'w> {
             irradiance,
             reuse,
         }
+    }
+}
+
+/// Where a gather's rays start and how they are followed.
+pub(super) struct GatherRays {
+    origin: DVec3,
+    /// The tangent, the bitangent and the normal: the directions' x, y and z.
+    axes: [DVec3; 3],
+    /// The trace level of the gathering point.
+    level: u32,
+    weight: f64,
+    max_sample: Option<f64>,
+    /// Whether the surfaces the rays meet may take samples of their own (the bounce is
+    /// below the recursion limit): then the rays depend on those taken before them.
+    pub(super) sampling: bool,
+}
+
+impl GatherRays {
+    fn ray(&self, d: DVec3) -> Ray {
+        let [t, b, n] = self.axes;
+        Ray::new(self.origin, t * d.x + b * d.y + n * d.z)
+    }
+}
+
+/// What one gathering ray brought back: its light, and how far it went when it met a
+/// surface.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Gathered {
+    light: DVec3,
+    distance: Option<f64>,
+}
+
+/// A gather's sums over its rays, taken in the rays' order.
+#[derive(Default)]
+struct Sums {
+    inverse_distances: f64,
+    total: DVec3,
+}
+
+impl Sums {
+    fn add(&mut self, gathered: Gathered) {
+        if let Some(distance) = gathered.distance {
+            self.inverse_distances += 1.0 / distance;
+        }
+        self.total += gathered.light;
+    }
+}
+
+impl<'w> Tracer<'w> {
+    /// The light the gathering ray in direction `d` brings back.
+    #[inline(always)]
+    pub(super) fn gather_ray(&mut self, rays: &GatherRays, d: DVec3) -> Gathered {
+        let ray = rays.ray(d);
+        match self.first_hit(&ray, RayKind::Radiosity) {
+            Some(hit) => Gathered {
+                light: self.hit_light(rays, &ray, &hit),
+                distance: Some(hit.t),
+            },
+            None => Gathered {
+                light: self.sky_light(rays, &ray),
+                distance: None,
+            },
+        }
+    }
+
+    /// The light of the sky a gathering ray met.
+    fn sky_light(&mut self, rays: &GatherRays, ray: &Ray) -> DVec3 {
+        let sky = self.missed(ray, RayKind::Radiosity);
+        let sky = self.through_media(ray, f64::INFINITY, 0, sky);
+        limit(sky.colour, rays.max_sample)
+    }
+
+    /// The light of the surface a gathering ray met.
+    fn hit_light(&mut self, rays: &GatherRays, ray: &Ray, hit: &Hit<'w>) -> DVec3 {
+        if rays.level >= self.world.max_trace_level {
+            return DVec3::ZERO;
+        }
+        let shaded = self.shade(ray, hit, rays.level + 1, rays.weight);
+        let light = self.through_media(ray, hit.t, hit.leaf.light_set, shaded);
+        limit(light.colour, rays.max_sample)
     }
 }
 

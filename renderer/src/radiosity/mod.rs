@@ -22,6 +22,7 @@ pub mod cache;
 mod directions;
 mod gather;
 mod pretrace;
+mod split;
 
 use crate::tracer::Quality;
 use analysis::scene::{self, Scene};

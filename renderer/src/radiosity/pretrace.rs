@@ -10,14 +10,18 @@
 //! so the cache, and so the picture, is the same whatever the number of threads. Units of
 //! one round may take samples close to each other's, which a single unit would have
 //! shared: rounds start small, while most rays still take samples, and grow with the
-//! number of rays traced, as the cache fills and new samples become rare.
+//! number of rays traced, as the cache fills and new samples become rare. A unit's rays
+//! take more samples in one part of the picture than in another, so one unit often ends
+//! well before the other: from then on, the other's gathers share their rays with the
+//! idle thread (see `split`), with the results they would have had alone.
 
 use super::Radiosity;
 use super::cache::Cache;
 use super::gather::{Phase, Walk};
 use crate::camera::Camera;
-use crate::parallel::map_indices;
+use crate::parallel::{help_until, map_indices, threads};
 use crate::tracer::{Tracer, World};
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The part of the image a render covers, and where its first camera rays go.
 #[derive(Debug, Clone, Copy)]
@@ -155,14 +159,23 @@ impl Pretrace<'_> {
             let round = &spots[start..(start + rays).min(spots.len())];
             let unit = round.len().div_ceil(UNITS_PER_ROUND);
             let this = &*self;
-            let units = map_indices(round.len().div_ceil(unit), |u| {
+            let finished = AtomicUsize::new(0);
+            let count = round.len().div_ceil(unit);
+            let units = map_indices(count, |u| {
                 let spots = &round[u * unit..((u + 1) * unit).min(round.len())];
                 let mut tracer = Tracer::new(this.world);
-                tracer.radiosity = Some(Walk::filling(this.radiosity, &this.caches));
-                let weakest: Vec<Option<f64>> = spots
-                    .iter()
-                    .map(|&(x, y)| this.trace_one(&mut tracer, phase, x, y))
-                    .collect();
+                tracer.radiosity = Some(Walk::filling(this.radiosity, &this.caches, &finished));
+                let weakest: Vec<Option<f64>> = {
+                    let _finished = Finished(&finished);
+                    spots
+                        .iter()
+                        .map(|&(x, y)| this.trace_one(&mut tracer, phase, x, y))
+                        .collect()
+                };
+                // Shares the gathers of the units still running.
+                if threads() > 1 {
+                    help_until(|| finished.load(Ordering::Relaxed) == count);
+                }
                 let walk = tracer.radiosity.take().expect("the unit's walk");
                 (walk.into_own_samples(), weakest)
             });
@@ -194,6 +207,16 @@ impl Pretrace<'_> {
         )?;
         tracer.trace_primary(&ray);
         tracer.radiosity.as_ref().map(|w| w.weakest)
+    }
+}
+
+/// Counts a unit of a round as finished when dropped, also when its rays panic: the
+/// threads sharing its gathers wait for the count.
+struct Finished<'a>(&'a AtomicUsize);
+
+impl Drop for Finished<'_> {
+    fn drop(&mut self) {
+        self.0.fetch_add(1, Ordering::Relaxed);
     }
 }
 

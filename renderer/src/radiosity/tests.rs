@@ -13,9 +13,8 @@ fn evaluate(text: &str) -> analysis::scene::Scene {
     evaluation.scene.expect("the scene evaluates")
 }
 
-/// How many samples the pretrace of `text` takes at each bounce depth, for a 64 × 48
-/// picture.
-fn samples_taken(text: &str) -> Vec<usize> {
+/// The radiosity of `text` after the pretrace for a 64 × 48 picture.
+fn pretraced(text: &str) -> super::Radiosity {
     let scene = evaluate(text);
     let settings = BuildSettings {
         quality: 9,
@@ -32,7 +31,13 @@ fn samples_taken(text: &str) -> Vec<usize> {
         corners: false,
     };
     super::pretrace(&mut world, &camera, &frame);
-    world.radiosity.expect("radiosity").sample_counts()
+    world.radiosity.expect("radiosity")
+}
+
+/// How many samples the pretrace of `text` takes at each bounce depth, for a 64 × 48
+/// picture.
+fn samples_taken(text: &str) -> Vec<usize> {
+    pretraced(text).sample_counts()
 }
 
 /// Renders `text` at 24 × 18 without antialiasing into a file of gamma 1; the scenes of
@@ -208,4 +213,43 @@ fn the_pretrace_takes_samples_where_they_are_needed() {
     assert!(adaptive[0] < plain[0], "{adaptive:?} against {plain:?}");
     assert!(deep[2] > 0, "{deep:?}");
     assert_eq!(samples_taken(&room("", 0.0)), [0, 0]);
+}
+
+/// The samples the pretrace of `text` takes for a 64 × 48 picture, depth by depth, on
+/// `threads` threads.
+fn samples_on(text: &str, threads: usize) -> Vec<Vec<super::cache::Sample>> {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("a thread pool");
+    let radiosity = pool.install(|| pretraced(text));
+    radiosity
+        .caches
+        .iter()
+        .map(|c| c.samples().to_vec())
+        .collect()
+}
+
+#[test]
+fn gathers_shared_with_a_free_thread_take_the_samples_one_thread_takes() {
+    // The upper half of the picture is sky: the first unit of a round whose rays cross
+    // the horizon, those through the upper pixels, ends early, and its thread shares the
+    // other's gathers.
+    for limit in [1, 2, 3] {
+        let scene = format!(
+            "#version 3.7;
+             global_settings {{ radiosity {{ count 40 recursion_limit {limit} }} }}
+             camera {{ location <0, 1, -4> look_at <0, 1, 0> }}
+             light_source {{ <2, 6, -3> rgb 1 }}
+             background {{ rgb <0.4, 0.6, 1> }}
+             plane {{ y, 0 pigment {{ checker rgb 1, rgb <1, 0.4, 0.2> }} }}
+             box {{ <-1, 0, -0.5>, <1, 0.8, 0.5> rotate y * 30 pigment {{ rgb 0.8 }} }}
+             sphere {{ <1.5, 0.5, -1>, 0.5 pigment {{ rgb <0.2, 0.5, 1> }} }}"
+        );
+        let one = samples_on(&scene, 1);
+        assert!(one.iter().all(|depth| !depth.is_empty()), "{limit}");
+        for _ in 0..4 {
+            assert!(samples_on(&scene, 2) == one, "recursion_limit {limit}");
+        }
+    }
 }
