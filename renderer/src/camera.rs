@@ -36,6 +36,9 @@ pub struct Camera {
     /// A perspective camera without a normal pattern, at a finite location: the common
     /// camera, whose rays [`Camera::ray`] finds inline.
     plain_perspective: bool,
+    /// An orthographic camera without a normal pattern, at a finite location, whose one
+    /// ray direction is finite and not zero: its rays too are found inline.
+    plain_orthographic: bool,
 }
 
 impl Camera {
@@ -65,7 +68,13 @@ impl Camera {
             plain_perspective: matches!(camera.kind, CameraKind::Perspective)
                 && camera.normal.is_none()
                 && camera.location.is_finite(),
+            plain_orthographic: false,
         };
+        c.plain_orthographic = matches!(camera.kind, CameraKind::Orthographic)
+            && camera.normal.is_none()
+            && camera.location.is_finite()
+            && c.unit_direction != DVec3::ZERO
+            && c.unit_direction.is_finite();
         // These projections use unit vectors; the others use the vectors' lengths.
         if matches!(
             c.kind,
@@ -108,13 +117,15 @@ impl Camera {
 
     /// The ray through image position `(x, y)`, in pixels from the top-left corner of the
     /// image (pixel centres at half-integers). `None` where the projection has no ray.
-    #[inline]
+    #[inline(always)]
     pub fn ray(&self, x: f64, y: f64, width: f64, height: f64) -> Option<Ray> {
         // The common camera's rays are found inline, without a call (the same arithmetic
         // as `projected_ray`'s, and the same rays). Its location is finite, and a
         // direction scaled by a finite, positive reciprocal of its length (the test of
         // `normalize_or_zero`) is finite and not zero, its largest component near 1:
-        // the tests `projected_ray` makes of its normalized direction pass.
+        // the tests `projected_ray` makes of its normalized direction pass. An
+        // orthographic camera's one direction passed them once, so only the origin is
+        // left to test.
         if self.plain_perspective {
             let x0 = x / width - 0.5;
             let y0 = 0.5 - y / height;
@@ -122,6 +133,14 @@ impl Camera {
             let rcp = direction.length_recip();
             return (rcp.is_finite() && rcp > 0.0)
                 .then(|| Ray::new(self.location, direction * rcp));
+        }
+        if self.plain_orthographic {
+            let x0 = x / width - 0.5;
+            let y0 = 0.5 - y / height;
+            let origin = self.location + x0 * self.right + y0 * self.up;
+            return origin
+                .is_finite()
+                .then(|| Ray::new(origin, self.unit_direction));
         }
         self.projected_ray(x, y, width, height)
     }

@@ -442,6 +442,12 @@ impl Leaf {
     /// [`Leaf::normal`] from the shape's normal at the point, carried into the world.
     #[inline(never)]
     fn transformed_normal(&self, p: DVec3, part: u32) -> DVec3 {
+        // A box in world space: its face's normal is already a unit axis, which
+        // normalizing keeps bit for bit.
+        if let (Shape::Cuboid(cuboid), None) = (&self.shape, &self.to_local) {
+            let n = cuboid.normal(part);
+            return if self.inverse { -n } else { n };
+        }
         let n = world_normal_of(
             self.to_local.as_ref(),
             self.shape.normal(self.local_point(p), part),
