@@ -4,10 +4,11 @@
 
 use super::Radiosity;
 use super::cache::{self, Cache, Sample};
+use super::split::ToAFreeThread;
 use crate::colour;
 use crate::object::{Hit, Leaf};
 use crate::ray::{Ray, RayKind};
-use crate::tracer::{Tracer, greyscale, hash3};
+use crate::tracer::{Tracer, World, greyscale, hash3};
 use analysis::scene::Finish;
 use glam::DVec3;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -394,24 +395,14 @@ impl<'w> Tracer<'w> {
         // importance, or whose tracer keeps photons found near its last points, stays on
         // this thread.
         let split = walk.may_split() && !radiosity.uses_importance && world.photons.is_none();
-        let (t, b) = n.any_orthonormal_pair();
-        let rays = GatherRays {
-            origin: p,
-            axes: [t, b, n],
-            level,
-            // Rays below radiosity's own adc_bailout are not followed: the tracer compares
-            // weights with the scene's, so the weight starts at the ratio of the two.
-            weight: (world.adc_bailout / settings.adc_bailout).min(1.0),
-            max_sample: settings.max_sample,
-            sampling: walk.bounce < settings.recursion_limit,
-        };
+        let rays = GatherRays::new(world, radiosity, p, n, level, walk.bounce);
         let count = radiosity.directions.count();
         let mut sums = Sums::default();
         let mut shares = ObjectShares::default();
         if split {
             let directions: Vec<DVec3> = radiosity.directions.gather(key).collect();
             let mut gathered = Vec::with_capacity(count);
-            self.gather_shared(&rays, &directions, &mut gathered);
+            self.gather_shared::<ToAFreeThread>(&rays, &directions, &mut gathered);
             gathered.into_iter().for_each(|g| sums.add(g));
         } else if radiosity.uses_importance {
             for (i, d) in radiosity.directions.gather(key).enumerate() {
@@ -480,6 +471,30 @@ pub(super) struct GatherRays {
 }
 
 impl GatherRays {
+    /// The rays of a gather at `p` about the normal `n`, at trace level `level`, by a walk
+    /// `bounce` diffuse bounces below the camera.
+    pub(super) fn new(
+        world: &World,
+        radiosity: &Radiosity,
+        p: DVec3,
+        n: DVec3,
+        level: u32,
+        bounce: u32,
+    ) -> GatherRays {
+        let settings = &radiosity.settings;
+        let (t, b) = n.any_orthonormal_pair();
+        GatherRays {
+            origin: p,
+            axes: [t, b, n],
+            level,
+            // Rays below radiosity's own adc_bailout are not followed: the tracer compares
+            // weights with the scene's, so the weight starts at the ratio of the two.
+            weight: (world.adc_bailout / settings.adc_bailout).min(1.0),
+            max_sample: settings.max_sample,
+            sampling: bounce < settings.recursion_limit,
+        }
+    }
+
     fn ray(&self, d: DVec3) -> Ray {
         let [t, b, n] = self.axes;
         Ray::new(self.origin, t * d.x + b * d.y + n * d.z)
@@ -488,7 +503,7 @@ impl GatherRays {
 
 /// What one gathering ray brought back: its light, and how far it went when it met a
 /// surface.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Gathered {
     light: DVec3,
     distance: Option<f64>,

@@ -30,6 +30,31 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// much as a ray.
 const FEWEST_SHARED: usize = 8;
 
+/// How a shared gather's second half is run, if at all: by a free thread if one takes it
+/// up while the first half is traced ([`ToAFreeThread`]). Whatever the answer and the
+/// timing, the results are those of one thread; the tests run it always and never.
+pub(super) trait Offer {
+    /// Runs `mine`, and `theirs` if the offer is taken up: `None` when it is not, and then
+    /// `theirs` does not run.
+    fn join<A: Send, B: Send>(
+        mine: impl FnOnce() -> A + Send,
+        theirs: impl FnOnce() -> B + Send,
+    ) -> (A, Option<B>);
+}
+
+/// The render's offer: to a thread whose own work has ended.
+pub(super) struct ToAFreeThread;
+
+impl Offer for ToAFreeThread {
+    #[inline(always)]
+    fn join<A: Send, B: Send>(
+        mine: impl FnOnce() -> A + Send,
+        theirs: impl FnOnce() -> B + Send,
+    ) -> (A, Option<B>) {
+        join_helped(mine, theirs)
+    }
+}
+
 /// Set once the first half of a shared gather has taken a sample: the copy's rays no
 /// longer count. On a cache line of its own, which the thread tracing the first half does
 /// not write while it works.
@@ -39,8 +64,8 @@ struct Sampled(AtomicBool);
 
 impl<'w> Tracer<'w> {
     /// The light each of the gathering rays in `directions` brings back, in order, into
-    /// `gathered`, shared with a free thread where one takes up a share.
-    pub(super) fn gather_shared(
+    /// `gathered`, with shares offered as `O` offers them: to a free thread in a render.
+    pub(super) fn gather_shared<O: Offer>(
         &mut self,
         rays: &GatherRays,
         directions: &[DVec3],
@@ -56,7 +81,7 @@ impl<'w> Tracer<'w> {
             let lengths = walk.own_lengths();
             let copy = self.copy_with(walk.fork());
             let sampled = Sampled::default();
-            let (took_samples, helped) = join_helped(
+            let (took_samples, helped) = O::join(
                 || {
                     let before = self.own_count();
                     for &d in mine {

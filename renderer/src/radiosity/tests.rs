@@ -5,7 +5,10 @@ use crate::build::{BuildSettings, build_world};
 use crate::camera::Camera;
 use crate::options::RenderOptions;
 use crate::render::render;
+use crate::tracer::Tracer;
 use analysis::{EvalOptions, MemoryFiles};
+use glam::DVec3;
+use std::sync::atomic::AtomicUsize;
 
 fn evaluate(text: &str) -> analysis::scene::Scene {
     let files = MemoryFiles::new().with("scene.pov", text);
@@ -13,15 +16,20 @@ fn evaluate(text: &str) -> analysis::scene::Scene {
     evaluation.scene.expect("the scene evaluates")
 }
 
-/// The radiosity of `text` after the pretrace for a 64 × 48 picture.
-fn pretraced(text: &str) -> super::Radiosity {
-    let scene = evaluate(text);
+/// The world of `scene` at full quality.
+fn built(scene: &analysis::scene::Scene) -> crate::tracer::World {
     let settings = BuildSettings {
         quality: 9,
         output_alpha: false,
         max_trace_level: None,
     };
-    let mut world = build_world(&scene, settings).expect("the scene builds");
+    build_world(scene, settings).expect("the scene builds")
+}
+
+/// The radiosity of `text` after the pretrace for a 64 × 48 picture.
+fn pretraced(text: &str) -> super::Radiosity {
+    let scene = evaluate(text);
+    let mut world = built(&scene);
     let camera = Camera::from_scene(&scene.camera).expect("a camera");
     let frame = super::Frame {
         width: 64,
@@ -230,26 +238,123 @@ fn samples_on(text: &str, threads: usize) -> Vec<Vec<super::cache::Sample>> {
         .collect()
 }
 
+/// A box and a sphere on a checkered floor under the sky, lit by radiosity with
+/// `recursion_limit` `limit`.
+fn floor_box_and_sphere(limit: u32) -> String {
+    format!(
+        "#version 3.7;
+         global_settings {{ radiosity {{ count 40 recursion_limit {limit} }} }}
+         camera {{ location <0, 1, -4> look_at <0, 1, 0> }}
+         light_source {{ <2, 6, -3> rgb 1 }}
+         background {{ rgb <0.4, 0.6, 1> }}
+         plane {{ y, 0 pigment {{ checker rgb 1, rgb <1, 0.4, 0.2> }} }}
+         box {{ <-1, 0, -0.5>, <1, 0.8, 0.5> rotate y * 30 pigment {{ rgb 0.8 }} }}
+         sphere {{ <1.5, 0.5, -1>, 0.5 pigment {{ rgb <0.2, 0.5, 1> }} }}"
+    )
+}
+
 #[test]
 fn gathers_shared_with_a_free_thread_take_the_samples_one_thread_takes() {
     // The upper half of the picture is sky: the first unit of a round whose rays cross
     // the horizon, those through the upper pixels, ends early, and its thread shares the
     // other's gathers.
     for limit in [1, 2, 3] {
-        let scene = format!(
-            "#version 3.7;
-             global_settings {{ radiosity {{ count 40 recursion_limit {limit} }} }}
-             camera {{ location <0, 1, -4> look_at <0, 1, 0> }}
-             light_source {{ <2, 6, -3> rgb 1 }}
-             background {{ rgb <0.4, 0.6, 1> }}
-             plane {{ y, 0 pigment {{ checker rgb 1, rgb <1, 0.4, 0.2> }} }}
-             box {{ <-1, 0, -0.5>, <1, 0.8, 0.5> rotate y * 30 pigment {{ rgb 0.8 }} }}
-             sphere {{ <1.5, 0.5, -1>, 0.5 pigment {{ rgb <0.2, 0.5, 1> }} }}"
-        );
+        let scene = floor_box_and_sphere(limit);
         let one = samples_on(&scene, 1);
         assert!(one.iter().all(|depth| !depth.is_empty()), "{limit}");
         for _ in 0..4 {
             assert!(samples_on(&scene, 2) == one, "recursion_limit {limit}");
         }
+    }
+}
+
+/// Takes up the other half of a shared gather at once, tracing it before this half as a
+/// faster thread would: its rays never see this half's samples.
+struct TakenFirst;
+
+impl super::split::Offer for TakenFirst {
+    fn join<A: Send, B: Send>(
+        mine: impl FnOnce() -> A + Send,
+        theirs: impl FnOnce() -> B + Send,
+    ) -> (A, Option<B>) {
+        let theirs = theirs();
+        (mine(), Some(theirs))
+    }
+}
+
+/// Takes up the other half of a shared gather after this half is traced: it stops at
+/// once if this half took a sample.
+struct TakenLast;
+
+impl super::split::Offer for TakenLast {
+    fn join<A: Send, B: Send>(
+        mine: impl FnOnce() -> A + Send,
+        theirs: impl FnOnce() -> B + Send,
+    ) -> (A, Option<B>) {
+        let mine = mine();
+        (mine, Some(theirs()))
+    }
+}
+
+/// Never takes up the other half, as when no thread is free: one thread's results.
+struct Declined;
+
+impl super::split::Offer for Declined {
+    fn join<A: Send, B: Send>(
+        mine: impl FnOnce() -> A + Send,
+        _: impl FnOnce() -> B + Send,
+    ) -> (A, Option<B>) {
+        (mine(), None)
+    }
+}
+
+/// What gathers at points across the floor of `text` bring back, one gather after another
+/// on one pretrace tracer with their shares offered as `O` offers them, and the samples
+/// they take, depth by depth.
+fn gathers_offered<O: super::split::Offer>(
+    text: &str,
+) -> (Vec<super::gather::Gathered>, Vec<Vec<super::cache::Sample>>) {
+    let world = built(&evaluate(text));
+    let radiosity = world.radiosity.as_ref().expect("radiosity");
+    let shared = radiosity.empty_caches();
+    // No unit has finished, so the gathers deeper down stay on this thread.
+    let finished = AtomicUsize::new(0);
+    let mut tracer = Tracer::new(&world);
+    tracer.radiosity = Some(super::Walk::filling(radiosity, &shared, &finished));
+    let mut gathered = Vec::new();
+    for i in 0..32 {
+        let p = DVec3::new(
+            f64::from(i % 8) * 0.5 - 2.0,
+            0.0,
+            f64::from(i / 8) * 0.5 - 2.0,
+        );
+        let rays = super::gather::GatherRays::new(&world, radiosity, p, DVec3::Y, 1, 0);
+        let directions: Vec<DVec3> = radiosity.directions.gather(i as u64).collect();
+        // Offered even after a gather that took samples, which a render keeps whole.
+        if let Some(walk) = &mut tracer.radiosity {
+            walk.quiet = true;
+        }
+        tracer.gather_shared::<O>(&rays, &directions, &mut gathered);
+    }
+    let walk = tracer.radiosity.take().expect("the tracer's walk");
+    let samples = walk.into_own_samples();
+    (
+        gathered,
+        samples.iter().map(|c| c.samples().to_vec()).collect(),
+    )
+}
+
+#[test]
+fn a_gather_whose_share_is_taken_up_brings_back_what_one_thread_does() {
+    // Whether a free thread takes up a share depends on timing; here it always does,
+    // before or after this half, and the results must be those of a gather never shared.
+    for limit in [1, 2, 3] {
+        let scene = floor_box_and_sphere(limit);
+        let alone = gathers_offered::<Declined>(&scene);
+        assert!(alone.1.iter().all(|depth| !depth.is_empty()), "{limit}");
+        let first = gathers_offered::<TakenFirst>(&scene);
+        assert!(first == alone, "taken up first, recursion_limit {limit}");
+        let last = gathers_offered::<TakenLast>(&scene);
+        assert!(last == alone, "taken up last, recursion_limit {limit}");
     }
 }
