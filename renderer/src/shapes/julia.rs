@@ -182,10 +182,13 @@ impl Julia {
         // from its bits, which saves the interpreter a multiplication at every step.
         let mut scale = 1.0;
         let mut peak: f64 = 0.0;
+        // The norm of the last point checked: a bounded orbit's value, its peak, comes
+        // from the points before the last step, which its stretch leaves out.
+        let mut norm = 1.0;
         for steps in 0..self.iterations {
             let a2 = a * a;
             let vector = along * along + across;
-            let norm = a2 + vector;
+            norm = a2 + vector;
             if norm > self.exit {
                 let scale = if power == 2.0 {
                     power_of_two(steps)
@@ -239,10 +242,12 @@ impl Julia {
                 across *= t * t;
             }
         }
-        if power == 2.0 {
-            scale = power_of_two(self.iterations);
-        }
-        self.bounded::<DISTANCE>(peak, stretch(scale, product, power))
+        let scale = if power == 2.0 {
+            power_of_two(self.iterations - 1)
+        } else {
+            scale / power
+        };
+        self.bounded::<DISTANCE>(peak, stretch(scale, product / norm, power))
     }
 
     /// Hypercomplex iteration: the algebra splits into two complex planes,
@@ -686,9 +691,10 @@ struct Orbit {
     /// The largest squared norm of the orbit less the escape norm: positive outside,
     /// negative or zero inside, and continuous across the boundary; NaN where not taken.
     value: f64,
-    /// The square of how far the orbit's last point moves per unit the start moves (a
-    /// bound, for quaternions, the norm of the derivative; infinite when not known): the
-    /// value bends over distances of about its inverse root.
+    /// The square of how far the last point of the orbit whose norm was checked (the
+    /// escaping one, or a bounded orbit's point before its last step) moves per unit the
+    /// start moves (a bound, for quaternions, the norm of the derivative; infinite when
+    /// not known): the value bends over distances of about its inverse root.
     stretch: f64,
 }
 
@@ -1079,6 +1085,53 @@ mod tests {
                     got.value
                 );
             }
+        }
+    }
+
+    #[test]
+    fn the_stretch_bounds_the_derivative_at_the_last_point_checked() {
+        // n² |h|² (squares) or n² |h|⁴ (cubes) for each point the value depends on: up to
+        // the escaping point, or to a bounded orbit's point before its last step.
+        for (function, power) in [(JuliaFunction::Sqr, 2.0), (JuliaFunction::Cube, 3.0)] {
+            let julia = Julia::new(
+                DVec4::new(-0.083, 0.0, -0.83, -0.025),
+                JuliaAlgebra::Quaternion,
+                function,
+                8,
+                50.0,
+                DVec4::new(0.0, 0.0, 0.0, 1.0),
+                0.0,
+            );
+            let (mut inside, mut outside) = (0, 0);
+            for k in 0..200 {
+                let t = f64::from(k);
+                let h = 0.9 * DVec4::new((0.7 * t).sin(), (1.3 * t).cos(), (2.1 * t).sin(), 0.0);
+                let got = if power == 2.0 {
+                    julia.orbit::<QUATERNION_SQUARE, false>(h)
+                } else {
+                    julia.orbit::<QUATERNION_CUBE, false>(h)
+                };
+                let (mut q, mut want) = (h, 1.0);
+                for step in 0..julia.iterations {
+                    let norm = q.length_squared();
+                    if norm > julia.exit || step + 1 == julia.iterations {
+                        break;
+                    }
+                    want *= power * power * norm.powf(power - 1.0);
+                    q = julia.step(q);
+                }
+                assert!(
+                    (got.stretch - want).abs() <= 1e-9 * want,
+                    "{function:?} {h}: {} {want}",
+                    got.stretch
+                );
+                if got.inside {
+                    inside += 1;
+                } else {
+                    outside += 1;
+                }
+            }
+            assert!(inside > 10 && outside > 10, "{inside} {outside}");
         }
     }
 
