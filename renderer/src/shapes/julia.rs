@@ -182,10 +182,13 @@ impl Julia {
         // from its bits, which saves the interpreter a multiplication at every step.
         let mut scale = 1.0;
         let mut peak: f64 = 0.0;
+        // The norm of the last point checked: a bounded orbit's value, its peak, comes
+        // from the points before the last step, which its stretch leaves out.
+        let mut norm = 1.0;
         for steps in 0..self.iterations {
             let a2 = a * a;
             let vector = along * along + across;
-            let norm = a2 + vector;
+            norm = a2 + vector;
             if norm > self.exit {
                 let scale = if power == 2.0 {
                     power_of_two(steps)
@@ -239,10 +242,12 @@ impl Julia {
                 across *= t * t;
             }
         }
-        if power == 2.0 {
-            scale = power_of_two(self.iterations);
-        }
-        self.bounded::<DISTANCE>(peak, stretch(scale, product, power))
+        let scale = if power == 2.0 {
+            power_of_two(self.iterations - 1)
+        } else {
+            scale / power
+        };
+        self.bounded::<DISTANCE>(peak, stretch(scale, product / norm, power))
     }
 
     /// Hypercomplex iteration: the algebra splits into two complex planes,
@@ -411,10 +416,12 @@ impl Julia {
     /// bracket many times (a fractal of many iterations) its choice shows. But once the
     /// bracket is shorter than the distance over which the orbit's value (its peak norm
     /// less the escape norm, which changes sign at the boundary) bends, the value is
-    /// nearly linear there and crosses once: regula falsi then finds halving's cell in a
-    /// few orbits where halving takes ten or more. Its trials are rounded to the grid, and
-    /// it is Illinois' variant (an end kept twice has its value halved, lest it stay put);
-    /// should two trials fail to halve the bracket, the next halves it.
+    /// nearly linear there and crosses once: interpolation then finds halving's cell in
+    /// two or three orbits where halving takes ten or more. Each trial is the grid point
+    /// next to [`crossing_estimate`]'s crossing on the side away from the end the last
+    /// trial moved, so that, the estimate being good, the next trial closes the bracket
+    /// from the other side rather than creeping up on the crossing from one; should two
+    /// trials fail to halve the bracket, the next halves it.
     fn refine<const KIND: u8>(
         &self,
         line: &PlaneLine,
@@ -431,7 +438,10 @@ impl Julia {
         }
         let (mut a, mut fa, mut sa) = (0, from.value, from.stretch);
         let (mut b, mut fb, mut sb) = (cells, to.value, to.stretch);
-        let mut kept_a = None;
+        // The end the last trial replaced, with its value (NaN where it had none): a
+        // third point for the interpolation; and whether that end was `a`.
+        let mut replaced: Option<(u64, f64)> = None;
+        let mut moved_a = None;
         let (mut earlier, mut last) = (u64::MAX, u64::MAX);
         while b - a > 1 {
             let width = b - a;
@@ -449,26 +459,28 @@ impl Julia {
                 if fb.is_nan() {
                     fb = value_at(b);
                 }
-                let x = a as f64 + width as f64 * (fa / (fa - fb));
-                // Rounded to the grid, strictly inside the bracket (NaN goes to its start).
-                (round(x) as u64).clamp(a + 1, b - 1)
+                let third = replaced.map(|(at, value)| (at as f64 - a as f64, value));
+                let x = crossing_estimate(width as f64, fa, fb, third);
+                let next = match moved_a {
+                    Some(true) => x.ceil(),
+                    Some(false) => x.floor(),
+                    None => round(x),
+                };
+                // On the grid, strictly inside the bracket (NaN goes to its start).
+                a + (next as u64).clamp(1, width - 1)
             } else {
                 a + width / 2
             };
             (earlier, last) = (last, width);
             let orbit = self.orbit_on::<KIND, false>(line, start + trial as f64 * cell);
             if orbit.inside == from.inside {
+                replaced = Some((a, fa));
+                moved_a = Some(true);
                 (a, fa, sa) = (trial, orbit.value, orbit.stretch);
-                if kept_a == Some(false) {
-                    fb *= 0.5;
-                }
-                kept_a = Some(false);
             } else {
+                replaced = Some((b, fb));
+                moved_a = Some(false);
                 (b, fb, sb) = (trial, orbit.value, orbit.stretch);
-                if kept_a == Some(true) {
-                    fa *= 0.5;
-                }
-                kept_a = Some(true);
             }
         }
         (if from.inside { a } else { b }) as f64 * cell
@@ -640,6 +652,24 @@ fn stretch(scale: f64, product: f64, power: f64) -> f64 {
     }
 }
 
+/// Where a value that is `fa` at 0 and `fb` at `width` (of opposite signs) crosses zero:
+/// where the inverse quadratic through those and the `third` point (its position and
+/// value) does, when that lies strictly inside the bracket, and otherwise where the chord
+/// does. Near a simple crossing the quadratic is the better guess by far (its error
+/// shrinks with the product of the three points' distances from the crossing, the
+/// chord's with that of two), and where it strays outside the bracket the chord is safe.
+fn crossing_estimate(width: f64, fa: f64, fb: f64, third: Option<(f64, f64)>) -> f64 {
+    if let Some((c, fc)) = third {
+        let quadratic =
+            width * fa * fc / ((fb - fa) * (fb - fc)) + c * fa * fb / ((fc - fa) * (fc - fb));
+        // False for NaN: a third point without a value, or two equal values.
+        if quadratic > 0.0 && quadratic < width {
+            return quadratic;
+        }
+    }
+    width * (fa / (fa - fb))
+}
+
 /// 2^k, exactly, as repeated doubling gives it: infinite past 2^1023. The exponent field
 /// of 2^1024 would be all ones, the bits of infinity.
 fn power_of_two(k: u32) -> f64 {
@@ -661,9 +691,10 @@ struct Orbit {
     /// The largest squared norm of the orbit less the escape norm: positive outside,
     /// negative or zero inside, and continuous across the boundary; NaN where not taken.
     value: f64,
-    /// The square of how far the orbit's last point moves per unit the start moves (a
-    /// bound, for quaternions, the norm of the derivative; infinite when not known): the
-    /// value bends over distances of about its inverse root.
+    /// The square of how far the last point of the orbit whose norm was checked (the
+    /// escaping one, or a bounded orbit's point before its last step) moves per unit the
+    /// start moves (a bound, for quaternions, the norm of the derivative; infinite when
+    /// not known): the value bends over distances of about its inverse root.
     stretch: f64,
 }
 
@@ -1057,6 +1088,53 @@ mod tests {
         }
     }
 
+    #[test]
+    fn the_stretch_bounds_the_derivative_at_the_last_point_checked() {
+        // n² |h|² (squares) or n² |h|⁴ (cubes) for each point the value depends on: up to
+        // the escaping point, or to a bounded orbit's point before its last step.
+        for (function, power) in [(JuliaFunction::Sqr, 2.0), (JuliaFunction::Cube, 3.0)] {
+            let julia = Julia::new(
+                DVec4::new(-0.083, 0.0, -0.83, -0.025),
+                JuliaAlgebra::Quaternion,
+                function,
+                8,
+                50.0,
+                DVec4::new(0.0, 0.0, 0.0, 1.0),
+                0.0,
+            );
+            let (mut inside, mut outside) = (0, 0);
+            for k in 0..200 {
+                let t = f64::from(k);
+                let h = 0.9 * DVec4::new((0.7 * t).sin(), (1.3 * t).cos(), (2.1 * t).sin(), 0.0);
+                let got = if power == 2.0 {
+                    julia.orbit::<QUATERNION_SQUARE, false>(h)
+                } else {
+                    julia.orbit::<QUATERNION_CUBE, false>(h)
+                };
+                let (mut q, mut want) = (h, 1.0);
+                for step in 0..julia.iterations {
+                    let norm = q.length_squared();
+                    if norm > julia.exit || step + 1 == julia.iterations {
+                        break;
+                    }
+                    want *= power * power * norm.powf(power - 1.0);
+                    q = julia.step(q);
+                }
+                assert!(
+                    (got.stretch - want).abs() <= 1e-9 * want,
+                    "{function:?} {h}: {} {want}",
+                    got.stretch
+                );
+                if got.inside {
+                    inside += 1;
+                } else {
+                    outside += 1;
+                }
+            }
+            assert!(inside > 10 && outside > 10, "{inside} {outside}");
+        }
+    }
+
     /// The gallery's fractal with a parameter of every component, on a tilted slice.
     fn tilted_julia() -> Julia {
         Julia::new(
@@ -1211,6 +1289,33 @@ mod tests {
             }
         }
         refined
+    }
+
+    #[test]
+    fn the_crossing_estimate_is_exact_for_lines_and_inverse_quadratics() {
+        // A straight value, with or without a third point: the chord's crossing.
+        let line = |x: f64| 0.3 - 0.1 * x;
+        for third in [None, Some((11.0, line(11.0)))] {
+            let got = crossing_estimate(8.0, line(0.0), line(8.0), third);
+            assert!((got - 3.0).abs() < 1e-12, "{third:?}: {got}");
+        }
+        // A value whose inverse is quadratic, x = 2 + f + f², crossing at 2: found
+        // exactly from three points, where the chord misses.
+        let points = [-0.5_f64, 1.0, 2.0].map(|f| (2.0 + f + f * f, f));
+        let [(a, fa), (b, fb), (c, fc)] = points;
+        let got = a + crossing_estimate(b - a, fa, fb, Some((c - a, fc)));
+        assert!((got - 2.0).abs() < 1e-12, "{got}");
+        assert!((a + crossing_estimate(b - a, fa, fb, None) - 2.0).abs() > 0.1);
+        // A third point that would put the crossing outside the bracket, or that has no
+        // value, leaves the chord.
+        let chord = crossing_estimate(4.0, 1.0, -1.0, None);
+        assert_eq!(
+            crossing_estimate(4.0, 1.0, -1.0, Some((5.0, f64::NAN))),
+            chord
+        );
+        assert_eq!(crossing_estimate(4.0, 1.0, -1.0, Some((5.0, -1.0))), chord);
+        let outside = crossing_estimate(4.0, 1.0, -1.0, Some((-1.0, 0.01)));
+        assert_eq!(outside, chord);
     }
 
     #[test]
