@@ -13,10 +13,17 @@ const PIO2_LOW: f64 = 2.022_266_248_795_950_6e-21;
 /// The largest argument reduced here; beyond it the standard functions take over.
 const REDUCTION_LIMIT: f64 = 1.0e5;
 
+/// Whether `x` is within the reduction's limit: one comparison that NaN fails too, where a
+/// test for NaN and one of the size were two.
+#[inline(always)]
+fn reducible(x: f64) -> bool {
+    x.abs() <= REDUCTION_LIMIT
+}
+
 /// sin(x) and cos(x), within a few units in the last place, sharing one range reduction.
 #[inline]
 pub fn sin_cos(x: f64) -> (f64, f64) {
-    if x.is_nan() || x.abs() > REDUCTION_LIMIT {
+    if !reducible(x) {
         return (x.sin(), x.cos());
     }
     let (quarter, r) = reduce(x);
@@ -32,7 +39,7 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
 /// sin(x) alone, the very value [`sin_cos`] gives, for half the series.
 #[inline]
 pub fn sin(x: f64) -> f64 {
-    if x.is_nan() || x.abs() > REDUCTION_LIMIT {
+    if !reducible(x) {
         return x.sin();
     }
     let (quarter, r) = reduce(x);

@@ -13,6 +13,7 @@ mod tables;
 
 use crate::floor::{ROUNDER, ROUNDS_BELOW, floor_whole};
 use glam::DVec3;
+use std::cell::RefCell;
 use std::ops::{Add, Mul, Sub};
 use tables::{COEFFICIENTS, HASH};
 
@@ -115,7 +116,7 @@ where
 /// not closures, which the compiler kept out of line and the interpreted plugin paid a
 /// call for each.
 #[inline(always)]
-fn blend_cell<T>(p: DVec3, table: &[[T; 4]; 256]) -> T
+fn blend_cell<T>(p: DVec3, table: &'static [[T; 4]; 256]) -> T
 where
     T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T>,
 {
@@ -123,11 +124,161 @@ where
     if cell.t.y == 0.0 {
         // The y weight is then 0 too, known here so that its test folds away.
         let s = DVec3::new(s_curve(cell.t.x), 0.0, s_curve(cell.t.z));
-        cell.blend::<T, true>(table, s)
+        cell.blend::<T, true, _>(s, Lattice(table))
     } else {
         let s = DVec3::new(s_curve(cell.t.x), s_curve(cell.t.y), s_curve(cell.t.z));
-        cell.blend::<T, false>(table, s)
+        cell.blend::<T, false, _>(s, Lattice(table))
     }
+}
+
+/// [`blend_cell`] of the vector noise with its corners taken from `known` when `p` lies in
+/// the cell whose corners it holds, and kept there otherwise: the same corners, so the
+/// same value.
+#[inline(always)]
+fn blend_cell_known(p: DVec3, known: &mut KnownCell) -> DVec3 {
+    let cell = Cell::around(p);
+    if cell.t.y == 0.0 {
+        let s = DVec3::new(s_curve(cell.t.x), 0.0, s_curve(cell.t.z));
+        let corners = known.corners(&cell, 1);
+        cell.blend::<DVec3, true, _>(s, corners)
+    } else {
+        let s = DVec3::new(s_curve(cell.t.x), s_curve(cell.t.y), s_curve(cell.t.z));
+        let corners = known.corners(&cell, 2);
+        cell.blend::<DVec3, false, _>(s, corners)
+    }
+}
+
+/// Where a blend finds its corners' coefficients: each corner's through its face's (the
+/// corners at one x) and its edge's (at one x and y), so that the lattice's hashes of x
+/// and of x and y are each found once for the corners that share them. Each step takes
+/// the cell's coordinate along its axis.
+trait Corners<T: 'static>: Copy {
+    type Face: Copy;
+    type Edge: Copy;
+    fn face(self, x: i64, i: i64) -> Self::Face;
+    fn edge(self, y: i64, face: Self::Face, j: i64) -> Self::Edge;
+    fn corner(self, z: i64, edge: Self::Edge, k: i64) -> &'static [T; 4];
+}
+
+/// The corners found from the lattice, in a table of coefficients: the hash of x, then of
+/// that xor y, then of that xor z picks the corner's entry.
+struct Lattice<T: 'static>(&'static [[T; 4]; 256]);
+
+impl<T> Clone for Lattice<T> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<T> Copy for Lattice<T> {}
+
+impl<T> Corners<T> for Lattice<T> {
+    type Face = usize;
+    type Edge = usize;
+
+    #[inline(always)]
+    fn face(self, x: i64, i: i64) -> usize {
+        usize::from(HASH[lattice(x, i)])
+    }
+
+    #[inline(always)]
+    fn edge(self, y: i64, hx: usize, j: i64) -> usize {
+        usize::from(HASH[(hx ^ lattice(y, j)) & 4095])
+    }
+
+    #[inline(always)]
+    fn corner(self, z: i64, hxy: usize, k: i64) -> &'static [T; 4] {
+        &self.0[usize::from(HASH[(hxy ^ lattice(z, k)) & 4095]) & 255]
+    }
+}
+
+/// A cell's corners in [`VECTOR_CORNERS`], by x, y and z offset.
+type KnownCorners = [[[&'static [DVec3; 4]; 2]; 2]; 2];
+
+impl Corners<DVec3> for &KnownCorners {
+    type Face = usize;
+    type Edge = (usize, usize);
+
+    #[inline(always)]
+    fn face(self, _: i64, i: i64) -> usize {
+        i as usize
+    }
+
+    #[inline(always)]
+    fn edge(self, _: i64, i: usize, j: i64) -> (usize, usize) {
+        (i, j as usize)
+    }
+
+    #[inline(always)]
+    fn corner(self, _: i64, (i, j): (usize, usize), k: i64) -> &'static [DVec3; 4] {
+        self[i][j][k as usize]
+    }
+}
+
+/// The corners of the last cell an octave of [`turbulence`] met. Neighbouring pixels and
+/// a pixel's antialiasing samples mostly fall in one cell at each octave but the finest
+/// (caustic.pov: 88% of its octaves), and then find their corners without the three
+/// dependent table lookups of each.
+#[derive(Clone, Copy)]
+struct KnownCell {
+    x: i64,
+    y: i64,
+    z: i64,
+    /// How many rows along y of `corners` hold the cell's: 0, 1 (a cell met on one of the
+    /// lattice's y planes, which blends only those) or 2.
+    rows: i64,
+    corners: KnownCorners,
+}
+
+impl KnownCell {
+    const NONE: KnownCell = KnownCell {
+        x: 0,
+        y: 0,
+        z: 0,
+        rows: 0,
+        corners: [[[&VECTOR_CORNERS[0]; 2]; 2]; 2],
+    };
+
+    /// `cell`'s corners in its first `rows` rows along y, found here when they were the
+    /// last ones found, and otherwise found and kept.
+    #[inline(always)]
+    fn corners(&mut self, cell: &Cell, rows: i64) -> &KnownCorners {
+        let known = self.x == cell.x && self.y == cell.y && self.z == cell.z;
+        if !(known && self.rows >= rows) {
+            self.find(cell.x, cell.y, cell.z, rows);
+        }
+        &self.corners
+    }
+
+    /// The corners of the cell at `x`, `y`, `z`, kept. Out of line, with the coordinates
+    /// passed as they are rather than the cell by reference, which would keep the cell in
+    /// memory at every octave: a cell changes at few samples.
+    #[inline(never)]
+    fn find(&mut self, x: i64, y: i64, z: i64, rows: i64) {
+        let lattice = Lattice(&VECTOR_CORNERS);
+        for i in 0..2 {
+            let hx = lattice.face(x, i);
+            for j in 0..rows {
+                let hxy = lattice.edge(y, hx, j);
+                for k in 0..2 {
+                    self.corners[i as usize][j as usize][k as usize] = lattice.corner(z, hxy, k);
+                }
+            }
+        }
+        (self.x, self.y, self.z, self.rows) = (x, y, z, rows);
+    }
+}
+
+/// How many octaves of [`turbulence`] keep their last cell's corners; finer ones (rarely
+/// asked for: POV-Ray's default is 6) find theirs each time.
+const KNOWN_OCTAVES: usize = 8;
+
+thread_local! {
+    /// This thread's last cells of the octaves of [`turbulence`]: corners are a function
+    /// of the cell alone, so whether they come from here or are found again changes no
+    /// value, and no render depends on which thread traced what.
+    static KNOWN_CELLS: RefCell<[KnownCell; KNOWN_OCTAVES]> =
+        const { RefCell::new([KnownCell::NONE; KNOWN_OCTAVES]) };
 }
 
 /// A lattice cell: its coordinates and a point's fractions in it.
@@ -179,58 +330,57 @@ impl Cell {
         }
     }
 
-    /// The blend over x, y and z (weights `s`) of the cell's corners.
+    /// The blend over x, y and z (weights `s`) of the cell's corners, found in `corners`.
     #[inline(always)]
-    fn blend<T, const ON_Y_PLANE: bool>(&self, table: &[[T; 4]; 256], s: DVec3) -> T
+    fn blend<T, const ON_Y_PLANE: bool, C: Corners<T>>(&self, s: DVec3, corners: C) -> T
     where
-        T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T>,
+        T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T> + 'static,
     {
-        let near = self.face::<T, ON_Y_PLANE>(table, s, 0);
+        let near = self.face::<T, ON_Y_PLANE, C>(s, corners, 0);
         if s.x == 0.0 {
             return near;
         }
-        let far = self.face::<T, ON_Y_PLANE>(table, s, 1);
+        let far = self.face::<T, ON_Y_PLANE, C>(s, corners, 1);
         near + (far - near) * s.x
     }
 
     /// The blend over y and z (weights `s.y` and `s.z`) of the corners of the face at x
     /// offset `i` (0 or 1).
     #[inline(always)]
-    fn face<T, const ON_Y_PLANE: bool>(&self, table: &[[T; 4]; 256], s: DVec3, i: i64) -> T
+    fn face<T, const ON_Y_PLANE: bool, C: Corners<T>>(&self, s: DVec3, corners: C, i: i64) -> T
     where
-        T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T>,
+        T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T> + 'static,
     {
-        let hx = usize::from(HASH[lattice(self.x, i)]);
-        let near = self.edge::<T, ON_Y_PLANE>(table, hx, s.z, i, 0);
+        let face = corners.face(self.x, i);
+        let near = self.edge::<T, ON_Y_PLANE, C>(corners, face, s.z, i, 0);
         if s.y == 0.0 {
             return near;
         }
-        let far = self.edge::<T, ON_Y_PLANE>(table, hx, s.z, i, 1);
+        let far = self.edge::<T, ON_Y_PLANE, C>(corners, face, s.z, i, 1);
         near + (far - near) * s.y
     }
 
     /// The blend along z (weight `sz`) of the two corners at x offset `i` and y offset
-    /// `j`, below the hash `hx` of the x coordinate.
+    /// `j`, on the face `face` of `corners`.
     #[inline(always)]
-    fn edge<T, const ON_Y_PLANE: bool>(
+    fn edge<T, const ON_Y_PLANE: bool, C: Corners<T>>(
         &self,
-        table: &[[T; 4]; 256],
-        hx: usize,
+        corners: C,
+        face: C::Face,
         sz: f64,
         i: i64,
         j: i64,
     ) -> T
     where
-        T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T>,
+        T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T> + 'static,
     {
-        let hxy = usize::from(HASH[(hx ^ lattice(self.y, j)) & 4095]);
-        let hash = |k| usize::from(HASH[(hxy ^ lattice(self.z, k)) & 4095]) & 255;
+        let edge = corners.edge(self.y, face, j);
         let d = self.t - DVec3::new(i as f64, j as f64, 0.0);
-        let near = corner_value::<T, ON_Y_PLANE>(&table[hash(0)], d);
+        let near = corner_value::<T, ON_Y_PLANE>(corners.corner(self.z, edge, 0), d);
         if sz == 0.0 {
             return near;
         }
-        let far = corner_value::<T, ON_Y_PLANE>(&table[hash(1)], d - DVec3::Z);
+        let far = corner_value::<T, ON_Y_PLANE>(corners.corner(self.z, edge, 1), d - DVec3::Z);
         near + (far - near) * sz
     }
 }
@@ -318,19 +468,33 @@ fn vector_inline(p: DVec3) -> DVec3 {
     if value.x.is_nan() { DVec3::ZERO } else { value }
 }
 
+/// [`vector_inline`] with its corners known when `p` lies in `known`'s cell.
+#[inline(always)]
+fn vector_known(p: DVec3, known: &mut KnownCell) -> DVec3 {
+    let value = blend_cell_known(p, known);
+    if value.x.is_nan() { DVec3::ZERO } else { value }
+}
+
 /// The classic turbulence displacement: octaves of vector noise, each `lambda` times finer
 /// and `omega` times weaker than the last. POV-Ray keeps `omega` and `lambda` in single
 /// precision: so do we, or its values at fine octaves differ by up to 3e-5.
 pub fn turbulence(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
-    let (omega, lambda) = (f64::from(omega as f32), f64::from(lambda as f32));
-    let mut sum = DVec3::ZERO;
-    let (mut scale, mut amplitude) = (1.0, 1.0);
-    for _ in 0..octaves.max(1) {
-        sum += vector_inline(p * scale) * amplitude;
-        scale *= lambda;
-        amplitude *= omega;
-    }
-    sum
+    KNOWN_CELLS.with_borrow_mut(|known| {
+        let (omega, lambda) = (f64::from(omega as f32), f64::from(lambda as f32));
+        let mut sum = DVec3::ZERO;
+        let (mut scale, mut amplitude) = (1.0, 1.0);
+        for octave in 0..octaves.max(1) as usize {
+            let q = p * scale;
+            let value = match known.get_mut(octave) {
+                Some(cell) => vector_known(q, cell),
+                None => vector_inline(q),
+            };
+            sum += value * amplitude;
+            scale *= lambda;
+            amplitude *= omega;
+        }
+        sum
+    })
 }
 
 /// POV-Ray's scalar turbulence (marble's, the spirals'): [`octave_noise`] at `p` clipped to
@@ -464,13 +628,13 @@ mod tests {
 
     /// The blend of [`blend_cell`] with every corner's y term, as points off the lattice's
     /// y planes take it.
-    fn blend_with_y_terms<T>(p: DVec3, table: &[[T; 4]; 256]) -> T
+    fn blend_with_y_terms<T>(p: DVec3, table: &'static [[T; 4]; 256]) -> T
     where
-        T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T>,
+        T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T> + 'static,
     {
         let cell = Cell::around(p);
         let s = DVec3::new(s_curve(cell.t.x), s_curve(cell.t.y), s_curve(cell.t.z));
-        cell.blend::<T, false>(table, s)
+        cell.blend::<T, false, _>(s, Lattice(table))
     }
 
     #[test]
@@ -483,6 +647,69 @@ mod tests {
             );
             assert_eq!(signed(p), blend_with_y_terms(p, &CORNERS), "{p}");
             assert_eq!(vector(p), blend_with_y_terms(p, &VECTOR_CORNERS), "{p}");
+        }
+    }
+
+    /// [`turbulence`] as it was before octaves kept their cells: every octave's vector
+    /// noise found from the lattice.
+    fn turbulence_from_the_lattice(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
+        let (omega, lambda) = (f64::from(omega as f32), f64::from(lambda as f32));
+        let mut sum = DVec3::ZERO;
+        let (mut scale, mut amplitude) = (1.0, 1.0);
+        for _ in 0..octaves.max(1) {
+            sum += vector(p * scale) * amplitude;
+            scale *= lambda;
+            amplitude *= omega;
+        }
+        sum
+    }
+
+    #[test]
+    fn known_cells_give_the_lattice_s_corners() {
+        let mut known = KnownCell::NONE;
+        let points = [
+            // A first cell on a y plane, again in it (known), then off the plane in the
+            // same cell (a row short: found again), back on the plane (known), and on to
+            // a cell across the lattice's wrap and one far out.
+            DVec3::new(0.3, 0.0, 0.1),
+            DVec3::new(0.7, 0.0, 0.9),
+            DVec3::new(0.5, 0.25, 0.5),
+            DVec3::new(0.2, 0.0, 0.6),
+            DVec3::new(-10_000.5, 2.25, -4096.75),
+            DVec3::new(5e4, -3.3e4, 12.5),
+        ];
+        for p in points {
+            let cell = Cell::around(p);
+            let rows = if cell.t.y == 0.0 { 1 } else { 2 };
+            let corners = *known.corners(&cell, rows);
+            let lattice = Lattice(&VECTOR_CORNERS);
+            for i in 0..2 {
+                let hx = lattice.face(cell.x, i);
+                for j in 0..rows {
+                    let hxy = lattice.edge(cell.y, hx, j);
+                    for k in 0..2 {
+                        let want = lattice.corner(cell.z, hxy, k);
+                        let got = corners[i as usize][j as usize][k as usize];
+                        assert!(std::ptr::eq(got, want), "{p} {i} {j} {k}");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn turbulence_with_known_cells_is_the_lattice_s() {
+        // Steps of a few hundredths, as from pixel to pixel: most octaves stay in their
+        // cells, the finest move on. On and off a y plane, with more octaves than are
+        // kept, and two turbulences taking turns.
+        for i in 0..4000 {
+            let t = f64::from(i);
+            let y = if i % 500 < 250 { 0.0 } else { 0.37 + t * 1e-4 };
+            let p = DVec3::new(t * 0.013 - 20.0, y, (t * 0.0071).sin() * 3.0);
+            for (octaves, omega, lambda) in [(6, 0.5, 2.0), (11, 0.6, 2.7), (1, 0.5, 2.0)] {
+                let want = turbulence_from_the_lattice(p, octaves, omega, lambda);
+                assert_eq!(turbulence(p, octaves, omega, lambda), want, "{p} {octaves}");
+            }
         }
     }
 

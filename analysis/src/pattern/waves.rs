@@ -58,16 +58,41 @@ fn each_source(
     own: bool,
     mut f: impl FnMut(DVec3, f64, f64, f64),
 ) {
-    for (source, own_frequency) in &SOURCE_TABLE {
-        let d = p - *source;
-        let length = match d.length() {
-            0.0 => 1.0,
-            l => l,
-        };
-        let k = if own { *own_frequency } else { 1.0 };
-        let sine = trig::sin((length * frequency * k + phase) * TAU);
-        f(d, length, sine, 1.0 / k);
-    }
+    // Source by source, not a loop: each source's position and frequency are then
+    // constants in the code, where the loop loaded them from the table and kept a count.
+    const _: () = assert!(SOURCES == 10, "one call below for each source");
+    let mut source = |i| one_source(i, p, frequency, phase, own, &mut f);
+    source(0);
+    source(1);
+    source(2);
+    source(3);
+    source(4);
+    source(5);
+    source(6);
+    source(7);
+    source(8);
+    source(9);
+}
+
+/// The terms of [`each_source`] for source `i`.
+#[inline(always)]
+fn one_source(
+    i: usize,
+    p: DVec3,
+    frequency: f64,
+    phase: f64,
+    own: bool,
+    f: &mut impl FnMut(DVec3, f64, f64, f64),
+) {
+    let (source, own_frequency) = SOURCE_TABLE[i];
+    let d = p - source;
+    let length = match d.length() {
+        0.0 => 1.0,
+        l => l,
+    };
+    let k = if own { own_frequency } else { 1.0 };
+    let sine = trig::sin((length * frequency * k + phase) * TAU);
+    f(d, length, sine, 1.0 / k);
 }
 
 /// `ripples` as a pigment: the mean of the sources' sines, mapped to 0..1.
