@@ -14,11 +14,12 @@
 //!
 //! The cells are small next to the typical distance to the `k`-th nearest photon, which
 //! keeps the lists short; the grid gives up (and the searches go to the tree) when the
-//! cells or the lists would take more than a few tens of megabytes.
+//! cells or the lists would take more than a few tens of megabytes. The lists are built
+//! from the photons sorted into bins of a few cells, taken nearest first.
 
 use super::kdtree::{Found, KdTree};
 use crate::parallel::map_indices;
-use glam::Vec3;
+use glam::{DVec3, Vec3};
 
 /// A photon in a cell's list: its position, a lower bound on its distance from the
 /// cell's centre, and its index in the tree.
@@ -57,9 +58,9 @@ pub struct CandidateGrid {
 
 /// The cell size as a fraction of the distance to the `k`-th nearest photon, typical over
 /// the photons: smaller cells have shorter lists, but take longer to build. On
-/// caustic.pov cells as wide as that distance look through the fewest photons, cells
-/// built and photons searched together.
-const CELL_FRACTION: f32 = 1.0;
+/// caustic.pov a half takes the fewest operations, cells built and photons searched
+/// together (a search looks through 11 photons).
+const CELL_FRACTION: f32 = 0.5;
 
 /// The most cells, and the most photons listed in all cells together: some 20 MB. Beyond
 /// either the cells grow, up to `ATTEMPTS` times, and then the grid gives up.
@@ -131,14 +132,16 @@ impl CandidateGrid {
         let most = counts.into_iter().max().unwrap_or(1) as f32;
         let margin = sides.max_element() * (1.0 / 256.0f32).max(most / (1 << 20) as f32);
         let scale = Vec3::select(extent.cmpgt(Vec3::ZERO), 1.0 / sides, Vec3::ZERO);
-        let layout = Layout {
+        let mut layout = Layout {
             origin: lo,
             sides,
             margin: f64::from(margin),
             counts,
             k,
             radius,
+            bins: Bins::default(),
         };
+        layout.bins = Bins::new(tree.positions(), &layout, scale);
         // Rows of cells along x, built in parallel natively and in order in the plugin.
         let rows = map_indices((counts[1] * counts[2]) as usize, |row| {
             layout.row(tree, row as u32)
@@ -209,6 +212,186 @@ struct Layout {
     counts: [u32; 3],
     k: usize,
     radius: f32,
+    bins: Bins,
+}
+
+/// The photons sorted into bins of two cells along each axis the photons spread along,
+/// and the offsets from a bin to the bins around it, nearest first: the photons near a
+/// cell's centre are gathered from the bins around it, cheaper than from the tree. The
+/// bins are laid out with a border of empty ones as wide as the offsets reach, so that
+/// an offset never leaves them.
+#[derive(Default)]
+struct Bins {
+    photons: Vec<(Vec3, u32)>,
+    /// Where each bin's photons start, and where the last one's end, border included.
+    starts: Vec<u32>,
+    /// The cells along each axis of a bin.
+    bin: [u32; 3],
+    /// The bins along x and y, border included.
+    padded: [usize; 2],
+    /// The width of the border along each axis.
+    border: [u32; 3],
+    /// For each place of a cell in its bin, offsets to the bins around as steps in
+    /// `starts`, each with the least distance from the cell's centre to a point of the
+    /// bin (widened by the margin), in that order.
+    offsets: Vec<Vec<(isize, f64)>>,
+    /// How far from a cell's centre the offsets cover every point.
+    reach: f64,
+}
+
+/// The most offsets to the bins around a bin, and the most bins with the border: cells
+/// whose lists reach farther are built from the tree.
+const MAX_OFFSETS: usize = 1 << 14;
+const MAX_PADDED: usize = 1 << 20;
+
+impl Bins {
+    fn new(positions: &[Vec3], layout: &Layout, scale: Vec3) -> Bins {
+        let bin = layout.counts.map(|c| if c > 1 { 2 } else { 1 });
+        let counts = [0, 1, 2].map(|i| layout.counts[i].div_ceil(bin[i]));
+        // Every cell the lists may need: within the radius plus a cell's half diagonal,
+        // as far as the limits allow.
+        let sides = layout.sides.as_dvec3();
+        let bin_sides = sides * DVec3::new(bin[0].into(), bin[1].into(), bin[2].into());
+        let mut reach = f64::from(layout.radius) + sides.length();
+        let borders = |reach: f64| {
+            [bin_sides.x, bin_sides.y, bin_sides.z].map(|side| {
+                if side > 0.0 {
+                    ((reach + layout.margin) / side).floor() as u32 + 1
+                } else {
+                    0
+                }
+            })
+        };
+        let size = |border: [u32; 3], base: [u32; 3]| {
+            (0..3)
+                .map(|i| (base[i] + 2 * border[i]) as usize)
+                .product::<usize>()
+        };
+        let mut border = borders(reach);
+        while size(border, [1; 3]) > MAX_OFFSETS || size(border, counts) > MAX_PADDED {
+            reach *= 0.8;
+            border = borders(reach);
+        }
+        let padded = [0, 1, 2].map(|i| (counts[i] + 2 * border[i]) as usize);
+        let last = layout.counts.map(|c| c - 1);
+        let bin_of = |p: Vec3| {
+            let f = (p - layout.origin) * scale;
+            let [x, y, z] = [f.x, f.y, f.z].map(|f| f as u32);
+            let at = [x.min(last[0]), y.min(last[1]), z.min(last[2])];
+            let [x, y, z] = [0, 1, 2].map(|i| (at[i] / bin[i] + border[i]) as usize);
+            x + padded[0] * (y + padded[1] * z)
+        };
+        let bins = padded.iter().product::<usize>();
+        let mut starts = vec![0u32; bins + 1];
+        for p in positions {
+            starts[bin_of(*p) + 1] += 1;
+        }
+        for i in 0..bins {
+            starts[i + 1] += starts[i];
+        }
+        let mut next = starts.clone();
+        let mut photons = vec![(Vec3::ZERO, 0); positions.len()];
+        for (index, p) in (0..).zip(positions) {
+            let bin = bin_of(*p);
+            photons[next[bin] as usize] = (*p, index);
+            next[bin] += 1;
+        }
+        let span = border.map(|b| b as i32);
+        // Places along an axis whose bins hold one cell are never asked for.
+        let offsets = (0..8)
+            .map(|place| {
+                // The cell's centre from its bin's lower corner.
+                let at = [place % 2, place / 2 % 2, place / 4].map(|a| a as f64 + 0.5);
+                let centre = DVec3::from(at) * sides;
+                let mut offsets = Vec::new();
+                for dz in -span[2]..=span[2] {
+                    for dy in -span[1]..=span[1] {
+                        for dx in -span[0]..=span[0] {
+                            let d = DVec3::new(dx.into(), dy.into(), dz.into());
+                            let (low, high) = (d * bin_sides, (d + 1.0) * bin_sides);
+                            let gap = ((low - centre).max(centre - high) - layout.margin)
+                                .max(DVec3::ZERO)
+                                .length();
+                            if gap <= reach {
+                                let step = dx as isize
+                                    + padded[0] as isize
+                                        * (dy as isize + padded[1] as isize * dz as isize);
+                                offsets.push((step, gap));
+                            }
+                        }
+                    }
+                }
+                offsets.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+                offsets
+            })
+            .collect();
+        Bins {
+            photons,
+            starts,
+            bin,
+            padded: [padded[0], padded[1]],
+            border,
+            offsets,
+            reach,
+        }
+    }
+
+    /// The photons that can be among the `k` nearest within the radius of a point of
+    /// cell `cell`, whose centre is `centre` and whose half diagonal is `h`, appended to
+    /// `out` as keys (the bits of their distance from the centre, then their index)
+    /// sorted; `false` when the cells around it do not reach far enough. The cells are
+    /// taken nearest first, so that the `k`-th nearest photon of the centre, and with
+    /// it how far the list reaches, is known before most are taken.
+    fn gather(
+        &self,
+        layout: &Layout,
+        cell: [u32; 3],
+        (centre, h): (Vec3, f64),
+        nearest: &mut Vec<f32>,
+        out: &mut Vec<u64>,
+    ) -> bool {
+        let k = layout.k;
+        let radius = f64::from(layout.radius);
+        let [x, y, z] = [0, 1, 2].map(|i| (cell[i] / self.bin[i] + self.border[i]) as usize);
+        let base = (x + self.padded[0] * (y + self.padded[1] * z)) as isize;
+        // The cell's place in its bin, counted as the offsets' places are.
+        let place = [0, 1, 2].map(|i| cell[i] % self.bin[i]);
+        let offsets = &self.offsets[(place[0] + 2 * place[1] + 4 * place[2]) as usize];
+        // The `k` nearest distances so far, in order.
+        nearest.clear();
+        let mut reach = (radius + h) * (1.0 + 2.0 * SLACK);
+        for &(step, gap) in offsets {
+            if gap > reach {
+                break;
+            }
+            let bin = (base + step) as usize;
+            let (start, end) = (self.starts[bin] as usize, self.starts[bin + 1] as usize);
+            for &(position, index) in &self.photons[start..end] {
+                let distance = position.distance(centre);
+                if f64::from(distance) > reach {
+                    continue;
+                }
+                out.push(u64::from(distance.to_bits()) << 32 | u64::from(index));
+                if nearest.len() < k || distance < nearest[k - 1] {
+                    let i = nearest.partition_point(|d| *d <= distance);
+                    nearest.insert(i, distance);
+                    nearest.truncate(k);
+                    if nearest.len() == k {
+                        // Single precision distances are off by a rounding at most.
+                        let kth = f64::from(nearest[k - 1]) * (1.0 + SLACK);
+                        reach = ((kth + h).min(radius) + h) * (1.0 + 2.0 * SLACK);
+                    }
+                }
+            }
+        }
+        if reach > self.reach {
+            out.clear();
+            return false;
+        }
+        out.retain(|key| f64::from(f32::from_bits((key >> 32) as u32)) <= reach);
+        out.sort_unstable();
+        true
+    }
 }
 
 impl Layout {
@@ -217,10 +400,9 @@ impl Layout {
     fn row(&self, tree: &KdTree, row: u32) -> (Vec<Candidate>, Vec<Cell>) {
         let (y, z) = (row % self.counts[1], row / self.counts[1]);
         let (mut list, mut cells) = (Vec::new(), Vec::new());
-        let (mut found, mut within) = (Vec::new(), Vec::new());
-        // The distance from the last cell's centre to its `k`-th nearest photon, which
-        // bounds the next one's: a first guess that spares the search the photons beyond.
-        let mut last: Option<(Vec3, f64)> = None;
+        let (mut found, mut within, mut nearest, mut keys) =
+            (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        let positions = tree.positions();
         let radius = f64::from(self.radius);
         let r2 = self.radius * self.radius;
         for x in 0..self.counts[0] {
@@ -233,25 +415,33 @@ impl Layout {
             );
             let c = centre.as_dvec3();
             let h = (c - min).abs().max((max - c).abs()).length();
-            let hint = last.map(|(previous, kth)| {
-                let bound = (kth + previous.as_dvec3().distance(c)) * (1.0 + SLACK);
-                (bound * bound) as f32
-            });
-            let kth = tree.nearest(centre, self.k, r2, hint, &mut found);
-            let kth = (found.len() == self.k).then(|| f64::from(kth).sqrt());
-            last = kth.map(|kth| (centre, kth));
-            let reach = (kth.map_or(radius, |kth| (kth + h).min(radius)) + h) * (1.0 + 2.0 * SLACK);
-            within.clear();
-            tree.within(centre, (reach * reach) as f32, &mut within);
+            keys.clear();
+            let cell = [x, y, z];
+            if !self
+                .bins
+                .gather(self, cell, (centre, h), &mut nearest, &mut keys)
+            {
+                // Too far for the cells around: the tree's photons within the reach.
+                let kth = tree.nearest(centre, self.k, r2, None, &mut found);
+                let kth = (found.len() == self.k).then(|| f64::from(kth).sqrt() * (1.0 + SLACK));
+                let reach =
+                    (kth.map_or(radius, |kth| (kth + h).min(radius)) + h) * (1.0 + 2.0 * SLACK);
+                within.clear();
+                tree.within(centre, (reach * reach) as f32, &mut within);
+                keys.extend(within.iter().map(|&(p, index)| {
+                    u64::from(p.distance(centre).to_bits()) << 32 | u64::from(index)
+                }));
+                keys.sort_unstable();
+            }
             let start = list.len();
-            list.extend(within.iter().map(|&(position, index)| Candidate {
-                position,
-                from_centre: (position.as_dvec3().distance(c) * (1.0 - SLACK)) as f32,
-                index,
+            list.extend(keys.iter().map(|key| {
+                let (distance, index) = (f32::from_bits((key >> 32) as u32), *key as u32);
+                Candidate {
+                    position: positions[index as usize],
+                    from_centre: (f64::from(distance) * (1.0 - SLACK)) as f32,
+                    index,
+                }
             }));
-            list[start..].sort_unstable_by(|a, b| {
-                (a.from_centre.total_cmp(&b.from_centre)).then(a.index.cmp(&b.index))
-            });
             cells.push(Cell {
                 start: start as u32,
                 centre,
@@ -480,6 +670,19 @@ mod tests {
         lattice.extend_from_within(100..200);
         check(&lattice, 8, 0.25, 10);
         check(&lattice, 30, 0.4, 11);
+    }
+
+    #[test]
+    fn cells_far_from_the_photons_find_what_all_photons_give() {
+        // A dense cluster and a sparse one far away: the cells between them reach beyond
+        // the bins around them, and their lists come from the tree.
+        let mut positions = cloud(1500, 5, |next: &mut dyn FnMut() -> f32| {
+            Vec3::new(next(), next(), next()) * 0.1
+        });
+        positions.extend(cloud(10, 6, |next: &mut dyn FnMut() -> f32| {
+            Vec3::new(4.0, 0.0, 0.0) + Vec3::new(next(), next(), next()) * 0.1
+        }));
+        check(&positions, 8, 10.0, 14);
     }
 
     #[test]
