@@ -16,6 +16,7 @@
 //! first looks among the photons around a recent point (a `Neighbourhood`), which settles
 //! it with the very photons the tree would give whenever they are near enough.
 
+use super::grid::{self, CandidateGrid};
 use super::kdtree::{self, Found, KdTree};
 use analysis::scene::Photons;
 use glam::Vec3;
@@ -119,8 +120,50 @@ impl Gather {
         }
     }
 
-    /// Gathers around `p` into `scratch.found`; `None` when no photon counts.
-    pub fn gather(&self, tree: &KdTree, p: Vec3, scratch: &mut GatherScratch) -> Option<Estimate> {
+    /// Gathers around `p` into `scratch.found`; `None` when no photon counts. `grid`,
+    /// the tree's [`CandidateGrid`] for this gathering if it has one, serves the points
+    /// inside it; with a grid the photons come sorted by distance and then by index
+    /// wherever they were found.
+    pub fn gather(
+        &self,
+        tree: &KdTree,
+        grid: Option<&CandidateGrid>,
+        p: Vec3,
+        scratch: &mut GatherScratch,
+    ) -> Option<Estimate> {
+        let r2 = self.radius * self.radius;
+        let area = match grid.and_then(|grid| grid.candidates(p)) {
+            Some(candidates) => grid::nearest(candidates, p, self.max, r2, &mut scratch.found),
+            None => {
+                let area = self.nearest_without_grid(tree, p, scratch);
+                if grid.is_some() {
+                    sort_canonically(&mut scratch.found);
+                }
+                area
+            }
+        };
+        let found = &mut scratch.found;
+        if found.len() >= self.min {
+            return estimate(found, area);
+        }
+        let wide = &mut scratch.wide;
+        let wide_area = tree.nearest(p, self.max, 9.0 * r2, None, wide);
+        let density = found.len() as f32 / area;
+        let wide_density = wide.len() as f32 / wide_area;
+        if wide.len() >= self.expand_min && wide_density > density * (1.0 + self.expand_increase) {
+            return estimate(found, area);
+        }
+        if grid.is_some() {
+            sort_canonically(wide);
+        }
+        std::mem::swap(found, wide);
+        estimate(found, wide_area)
+    }
+
+    /// The nearest photons within the first radius, found among a recent point's or
+    /// else in the tree, into `scratch.found` in no particular order; returns the
+    /// squared radius of their disc.
+    fn nearest_without_grid(&self, tree: &KdTree, p: Vec3, scratch: &mut GatherScratch) -> f32 {
         let r2 = self.radius * self.radius;
         let found = &mut scratch.found;
         let near = &mut scratch.near;
@@ -143,19 +186,16 @@ impl Gather {
         };
         let area = area.unwrap_or_else(|| tree.nearest(p, self.max, r2, hint, found));
         scratch.last = (found.len() == self.max).then_some(area);
-        if found.len() >= self.min {
-            return estimate(found, area);
-        }
-        let wide = &mut scratch.wide;
-        let wide_area = tree.nearest(p, self.max, 9.0 * r2, None, wide);
-        let density = found.len() as f32 / area;
-        let wide_density = wide.len() as f32 / wide_area;
-        if wide.len() >= self.expand_min && wide_density > density * (1.0 + self.expand_increase) {
-            return estimate(found, area);
-        }
-        std::mem::swap(found, wide);
-        estimate(found, wide_area)
+        area
     }
+}
+
+/// Puts found photons in the order a grid finds them, by distance and then by index: the
+/// order in which they are summed fixes the rounding of the sums, which must then depend
+/// on the point alone, not on the points a tracer gathered at before (which the
+/// neighbourhood's order does).
+fn sort_canonically(found: &mut [Found]) {
+    found.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
 }
 
 fn estimate(found: &[Found], area_radius2: f32) -> Option<Estimate> {
@@ -227,25 +267,36 @@ mod tests {
             expand_increase: 0.2,
             expand_min: 40,
         };
+        let grid = CandidateGrid::build(&tree, g.max, g.radius);
+        assert!(grid.is_some());
+        for grid in [None, grid.as_ref()] {
+            walk_across(&tree, grid, &g);
+        }
+    }
+
+    /// Gathers along a walk across the stripe of [`uneven`] and out beyond the photons,
+    /// in steps of all sizes, and checks what each finds against the tree.
+    fn walk_across(tree: &KdTree, grid: Option<&CandidateGrid>, g: &Gather) {
         let mut scratch = GatherScratch::default();
         let mut expected = Vec::new();
-        // A walk across the stripe and out beyond the photons, in steps of all sizes.
         let mut p = Vec3::new(-0.6, 0.0, 1.0);
         for i in 0..3000 {
             p += Vec3::new(0.002 * (i % 7) as f32, 0.0, 0.001 * (i % 5) as f32 - 0.0015);
-            let estimate = g.gather(&tree, p, &mut scratch);
+            let estimate = g.gather(tree, grid, p, &mut scratch);
             let area = tree.nearest(p, g.max, g.radius * g.radius, None, &mut expected);
-            let mut got = scratch.found.clone();
             if expected.len() >= g.min {
                 assert_eq!(estimate.map(|e| e.area_radius2), Some(area), "{p}");
-            }
-            got.sort_by_key(|f| f.1);
-            let mut want = expected.clone();
-            if want.len() >= g.min {
-                want.sort_by_key(|f| f.1);
-                assert_eq!(got, want, "{p}");
+                // With a grid, found in the canonical order, by distance and then by
+                // index; without one in no particular order.
+                let mut found = scratch.found.clone();
+                if grid.is_none() {
+                    sort_canonically(&mut found);
+                }
+                sort_canonically(&mut expected);
+                assert_eq!(found, expected, "{p}");
             }
         }
+        // The neighbourhood settles searches without a grid or outside it.
         assert!(scratch.near.radius > 0.0);
     }
 
@@ -254,7 +305,7 @@ mod tests {
         let tree = half_plane();
         let mut scratch = GatherScratch::default();
         let e = gather(1.0)
-            .gather(&tree, Vec3::new(-2.0, 0.0, 0.0), &mut scratch)
+            .gather(&tree, None, Vec3::new(-2.0, 0.0, 0.0), &mut scratch)
             .unwrap();
         assert_eq!(scratch.found.len(), 100);
         // A hundred photons at 0.01 each fill a disc of area about 1.
@@ -264,22 +315,21 @@ mod tests {
 
     #[test]
     fn beyond_the_edge_the_search_widens_only_when_it_finds_little() {
-        let tree = half_plane();
+        let (tree, g) = (half_plane(), gather(0.5));
         let mut scratch = GatherScratch::default();
-        let g = gather(0.5);
         // Just outside the edge: a few photons within 0.5; widening to 1.5 finds many
         // more at a much higher density, so the narrow estimate stands.
-        let e = g.gather(&tree, Vec3::new(0.4, 0.0, 0.0), &mut scratch);
+        let e = g.gather(&tree, None, Vec3::new(0.4, 0.0, 0.0), &mut scratch);
         assert_eq!(e.unwrap().area_radius2, 0.25);
         assert!(scratch.found.len() < 20);
         // Farther out nothing lies within 0.5; the wide search finds fewer than 40 and
         // is kept.
-        let e = g.gather(&tree, Vec3::new(1.3, 0.0, 0.0), &mut scratch);
+        let e = g.gather(&tree, None, Vec3::new(1.3, 0.0, 0.0), &mut scratch);
         assert_eq!(e.unwrap().area_radius2, 2.25);
         assert!(!scratch.found.is_empty() && scratch.found.len() < 40);
         // Beyond three radii there is nothing.
         assert!(
-            g.gather(&tree, Vec3::new(1.6, 0.0, 0.0), &mut scratch)
+            g.gather(&tree, None, Vec3::new(1.6, 0.0, 0.0), &mut scratch)
                 .is_none()
         );
     }

@@ -49,6 +49,11 @@ impl KdTree {
         &self.photons[index as usize]
     }
 
+    /// The photons' positions, by index.
+    pub fn positions(&self) -> &[Vec3] {
+        &self.positions
+    }
+
     /// The up to `k` photons nearest `p` within squared distance `max_d2`, into `found`
     /// (in no particular order); returns the squared distance of the farthest one kept
     /// when `k` were found, else `max_d2`. `hint` is a squared distance that probably

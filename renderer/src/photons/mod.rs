@@ -16,6 +16,7 @@
 //! and above, and only when some light shoots at some target.
 
 mod gather;
+mod grid;
 mod in_media;
 mod kdtree;
 mod shoot;
@@ -31,6 +32,7 @@ use analysis::scene::{
 pub use gather::GatherScratch;
 use gather::{Estimate, Gather};
 use glam::{DVec3, Vec3};
+use grid::CandidateGrid;
 use in_media::Deposit;
 pub use in_media::{MediaMap, collecting, media_within};
 use kdtree::KdTree;
@@ -186,6 +188,8 @@ impl PhotonBudget {
 #[derive(Debug, Clone)]
 pub struct PhotonMap {
     tree: KdTree,
+    /// The tree's photons listed by where they can be gathered, for most searches.
+    grid: Option<CandidateGrid>,
     gather: Gather,
     /// The photons left in media, with `media` in the photons block.
     pub in_media: Option<MediaMap>,
@@ -246,8 +250,10 @@ impl PhotonMap {
                 gather.max,
             )
         });
+        let tree = KdTree::build(stored);
         Ok(Some(PhotonMap {
-            tree: KdTree::build(stored),
+            grid: CandidateGrid::build(&tree, gather.max, gather.radius),
+            tree,
             gather,
             in_media,
         }))
@@ -270,7 +276,9 @@ impl PhotonMap {
         lights: &mut Vec<(DVec3, DVec3)>,
     ) {
         lights.clear();
-        let Some(Estimate { area_radius2 }) = self.gather.gather(&self.tree, p.as_vec3(), scratch)
+        let Some(Estimate { area_radius2 }) =
+            self.gather
+                .gather(&self.tree, self.grid.as_ref(), p.as_vec3(), scratch)
         else {
             return;
         };
