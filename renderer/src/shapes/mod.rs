@@ -195,11 +195,15 @@ impl Shape {
             Shape::Plane(s) => return s.first_hit(ray, tmin, tmax),
             Shape::Cuboid(s) => return s.first_hit(ray, tmin, tmax),
             Shape::Math(s) => {
-                // A polynomial's test and a julia fractal's straight from here: one call
-                // fewer for the interpreted plugin, whose calls each set up a frame.
+                // A polynomial's, a julia fractal's and a sphere sweep's tests straight from
+                // here: one call fewer for the interpreted plugin, whose calls each set up a
+                // frame.
                 return match &**s {
                     MathShape::Poly(p) => p.first_hit(ray, tmin, tmax).map(|t| Root { t, part: 0 }),
                     MathShape::Julia(j) => julia::first_root(j, ray, tmin, tmax),
+                    MathShape::SphereSweep(s) => {
+                        s.first_hit(ray, tmin, tmax).map(|t| Root { t, part: 0 })
+                    }
                     s => s.first_hit(ray, tmin, tmax),
                 };
             }
@@ -246,11 +250,12 @@ impl Shape {
             Shape::Triangle(s) => s.normal(p),
             Shape::Mesh(s) => s.normal(p, part),
             Shape::Polygon(_) => DVec3::Z,
-            // A polynomial's gradient and a julia fractal's straight from here, as their
-            // tests are.
+            // A polynomial's, a julia fractal's and a sphere sweep's normals straight from
+            // here, as their tests are.
             Shape::Math(s) => match &**s {
                 MathShape::Poly(poly) => poly.normal(p),
                 MathShape::Julia(julia) => julia.normal(p),
+                MathShape::SphereSweep(sweep) => sweep.normal(p),
                 s => s.normal(p, part),
             },
         }
