@@ -289,12 +289,7 @@ impl MathShape {
             _ => {
                 let mut roots = Roots::new();
                 self.intersect(ray, &mut roots);
-                return roots
-                    .as_slice()
-                    .iter()
-                    .copied()
-                    .filter(|r| r.t > tmin && r.t < tmax)
-                    .min_by(|a, b| a.t.total_cmp(&b.t));
+                return roots.nearest_within(tmin, tmax);
             }
         };
         t.map(|t| Root { t, part: 0 })

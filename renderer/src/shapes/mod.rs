@@ -81,6 +81,17 @@ impl Roots {
         }
     }
 
+    /// The nearest crossing inside `(tmin, tmax)`. Inlined, as the loop it stands for was,
+    /// into the tests of shapes that find every crossing.
+    #[inline]
+    pub fn nearest_within(&self, tmin: f64, tmax: f64) -> Option<Root> {
+        self.as_slice()
+            .iter()
+            .copied()
+            .filter(|r| r.t > tmin && r.t < tmax)
+            .min_by(|a, b| a.t.total_cmp(&b.t))
+    }
+
     /// Records a crossing; NaN parameters (degenerate rays) are dropped here so that no
     /// caller has to think of them.
     pub fn push(&mut self, t: f64, part: u32) {
@@ -195,10 +206,20 @@ impl Shape {
             Shape::Plane(s) => return s.first_hit(ray, tmin, tmax),
             Shape::Cuboid(s) => return s.first_hit(ray, tmin, tmax),
             Shape::Math(s) => {
-                // A polynomial's test straight from here: one call fewer for the
-                // interpreted plugin, whose calls each set up a frame.
+                // A polynomial's, a julia fractal's, a sphere sweep's and an isosurface's
+                // tests straight from here: a call or two fewer for the interpreted plugin,
+                // whose calls each set up a frame.
                 return match &**s {
                     MathShape::Poly(p) => p.first_hit(ray, tmin, tmax).map(|t| Root { t, part: 0 }),
+                    MathShape::Julia(j) => julia::first_root(j, ray, tmin, tmax),
+                    MathShape::SphereSweep(s) => {
+                        s.first_hit(ray, tmin, tmax).map(|t| Root { t, part: 0 })
+                    }
+                    MathShape::Isosurface(iso) => {
+                        let mut roots = Roots::new();
+                        iso.intersect(ray, &mut roots);
+                        roots.nearest_within(tmin, tmax)
+                    }
                     s => s.first_hit(ray, tmin, tmax),
                 };
             }
@@ -209,12 +230,7 @@ impl Shape {
         }
         let mut roots = Roots::new();
         self.intersect(ray, &mut roots);
-        roots
-            .as_slice()
-            .iter()
-            .copied()
-            .filter(|r| r.t > tmin && r.t < tmax)
-            .min_by(|a, b| a.t.total_cmp(&b.t))
+        roots.nearest_within(tmin, tmax)
     }
 
     pub fn inside(&self, p: DVec3) -> bool {
@@ -245,9 +261,12 @@ impl Shape {
             Shape::Triangle(s) => s.normal(p),
             Shape::Mesh(s) => s.normal(p, part),
             Shape::Polygon(_) => DVec3::Z,
-            // A polynomial's gradient straight from here, as its test is.
+            // A polynomial's, a julia fractal's and a sphere sweep's normals straight from
+            // here, as their tests are.
             Shape::Math(s) => match &**s {
                 MathShape::Poly(poly) => poly.normal(p),
+                MathShape::Julia(julia) => julia.normal(p),
+                MathShape::SphereSweep(sweep) => sweep.normal(p),
                 s => s.normal(p, part),
             },
         }
