@@ -371,7 +371,7 @@ impl Bins {
         let offsets = &self.offsets[(place[0] + 2 * place[1] + 4 * place[2]) as usize];
         // The `k` nearest distances so far, in order.
         nearest.clear();
-        let mut reach = (radius + h) * (1.0 + 2.0 * SLACK);
+        let mut reach = list_reach(None, h, radius);
         for &(step, gap) in offsets {
             if gap > reach {
                 break;
@@ -391,7 +391,7 @@ impl Bins {
                     if nearest.len() == k {
                         // Single precision distances are off by a rounding at most.
                         let kth = f64::from(nearest[k - 1]) * (1.0 + SLACK);
-                        reach = ((kth + h).min(radius) + h) * (1.0 + 2.0 * SLACK);
+                        reach = list_reach(Some(kth), h, radius);
                     }
                 }
             }
@@ -436,8 +436,7 @@ impl Layout {
                 // Too far for the cells around: the tree's photons within the reach.
                 let kth = tree.nearest(centre, self.k, r2, None, &mut found);
                 let kth = (found.len() == self.k).then(|| f64::from(kth).sqrt() * (1.0 + SLACK));
-                let reach =
-                    (kth.map_or(radius, |kth| (kth + h).min(radius)) + h) * (1.0 + 2.0 * SLACK);
+                let reach = list_reach(kth, h, radius);
                 within.clear();
                 tree.within(centre, (reach * reach) as f32, &mut within);
                 keys.extend(within.iter().map(|&(p, index)| {
@@ -461,6 +460,15 @@ impl Layout {
         }
         (list, cells)
     }
+}
+
+/// How far from a cell's centre its list reaches, for a cell whose centre is `h` from its
+/// farthest point: the `k`-th nearest photon of the centre, at `kth` (`None` when fewer lie
+/// within `radius`), bounds the `k`-th nearest of any point of the cell by `kth + h`, never
+/// more than the radius, and those photons lie within that plus `h` of the centre; widened
+/// against rounding.
+fn list_reach(kth: Option<f64>, h: f64, radius: f64) -> f64 {
+    (kth.map_or(radius, |kth| (kth + h).min(radius)) + h) * (1.0 + 2.0 * SLACK)
 }
 
 /// The median distance from a photon to its `k`-th nearest other photon within
