@@ -152,6 +152,9 @@ pub struct Tracer<'w> {
     area_samples: Vec<Option<DVec3>>,
     /// The interiors shadow rays start in: those of a media sample's containers.
     shadow_start: Vec<&'w Interior>,
+    /// The interiors the current shadow ray is inside, kept between shadow rays to spare
+    /// an allocation for each one that passes a transparent object.
+    shadow_inside: Vec<&'w Interior>,
     /// Where the current ray stands in the radiosity computation; `None` without it.
     pub(crate) radiosity: Option<crate::radiosity::Walk<'w>>,
     /// Each texture layer's reflectivity, normal and reflection exponent, kept from its
@@ -181,6 +184,7 @@ impl<'w> Tracer<'w> {
             shadow_surface: None,
             area_samples: Vec::new(),
             shadow_start: Vec::new(),
+            shadow_inside: Vec::new(),
             radiosity: world
                 .radiosity
                 .as_ref()
@@ -916,45 +920,51 @@ impl<'w> Tracer<'w> {
         }
         // The interiors the shadow ray is inside, for distance fading and media; it starts
         // outside everything, as POV-Ray's shadow rays do, unless it leaves a media sample.
-        let mut inside: Vec<&'w Interior> = self.shadow_start.clone();
+        let mut inside = std::mem::take(&mut self.shadow_inside);
+        inside.clone_from(&self.shadow_start);
         // Each transparent occluder filters the light and the search goes on beyond it;
         // the bound stops a pathological stack of surfaces.
-        for _ in 0..64 {
-            let Some(hit) = self.world.bvh.occluder(&q, &mut self.scratch) else {
-                let end = origin + direction * remaining;
-                for interior in &inside {
-                    colour *= interior.media_transmittance(origin, end);
+        let arriving = 'crossing: {
+            for _ in 0..64 {
+                let Some(hit) = self.world.bvh.occluder(&q, &mut self.scratch) else {
+                    let end = origin + direction * remaining;
+                    for interior in &inside {
+                        colour *= interior.media_transmittance(origin, end);
+                    }
+                    break 'crossing colour;
+                };
+                let leaf: &'w Leaf = hit.leaf;
+                let stops =
+                    photons_stop.is_some_and(|light| leaf.photons.stops_light_for_photons(light));
+                if stops || !leaf.transmits {
+                    if leaf.standalone {
+                        self.last_blocker = Some(leaf);
+                    }
+                    break 'crossing DVec3::ZERO;
                 }
-                return colour;
-            };
-            let leaf: &'w Leaf = hit.leaf;
-            let stops =
-                photons_stop.is_some_and(|light| leaf.photons.stops_light_for_photons(light));
-            if stops || !leaf.transmits {
-                if leaf.standalone {
-                    self.last_blocker = Some(leaf);
+                let point = q.ray.at(hit.t);
+                colour *=
+                    leaf.transmitted_at(&leaf.texture_point(point, hit.part, &q.ray), hit.part);
+                let interior: &'w Interior = &leaf.interior;
+                match inside.iter().position(|i| std::ptr::eq(*i, interior)) {
+                    Some(at) => {
+                        colour *= fade(interior, hit.t);
+                        colour *= interior.media_transmittance(origin, point);
+                        inside.remove(at);
+                    }
+                    None => inside.push(interior),
                 }
-                return DVec3::ZERO;
-            }
-            let point = q.ray.at(hit.t);
-            colour *= leaf.transmitted_at(&leaf.texture_point(point, hit.part, &q.ray), hit.part);
-            let interior: &'w Interior = &leaf.interior;
-            match inside.iter().position(|i| std::ptr::eq(*i, interior)) {
-                Some(at) => {
-                    colour *= fade(interior, hit.t);
-                    colour *= interior.media_transmittance(origin, point);
-                    inside.remove(at);
+                if colour.abs().max_element() < self.world.adc_bailout {
+                    break 'crossing DVec3::ZERO;
                 }
-                None => inside.push(interior),
+                origin = point;
+                remaining -= hit.t;
+                q = segment(self, origin, remaining);
             }
-            if colour.abs().max_element() < self.world.adc_bailout {
-                return DVec3::ZERO;
-            }
-            origin = point;
-            remaining -= hit.t;
-            q = segment(self, origin, remaining);
-        }
-        DVec3::ZERO
+            DVec3::ZERO
+        };
+        self.shadow_inside = inside;
+        arriving
     }
 
     /// Distance attenuation inside the interior the ray is leaving.
