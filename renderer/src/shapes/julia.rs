@@ -5,7 +5,7 @@
 //! pins down to 1e-7. The normal is the gradient of |h_n|² with respect to the point.
 
 use super::Root;
-use crate::fast_math::{max, min, normal_ln, round};
+use crate::fast_math::{ln_at_least_one, max, min, round};
 use crate::ray::Ray;
 use analysis::scene::math_shapes::{JuliaAlgebra, JuliaFunction};
 use glam::{DVec3, DVec4};
@@ -202,7 +202,7 @@ impl Julia {
                 }
                 // The escape norm is above 1, and finite: the point before was within the
                 // escape norm, at most 4 and a little.
-                let dist = normal_ln(0.25 * norm) / (product.sqrt() * 2.0);
+                let dist = ln_at_least_one(0.25 * norm) / (product.sqrt() * 2.0);
                 return Orbit::escaped(value, dist, product);
             }
             // The peak starts at zero and takes no NaN (no NaN is larger), so a plain
@@ -263,7 +263,7 @@ impl Julia {
                 if excess * excess < norm * (scale * scale * product) * self.short_bound {
                     return Orbit::escaped(value, 0.0, stretch);
                 }
-                let dist = normal_ln(norm) / (product.sqrt() * scale * 3.0);
+                let dist = ln_at_least_one(norm) / (product.sqrt() * scale * 3.0);
                 return Orbit::escaped(value, dist, stretch);
             }
             // As in [`Julia::square_orbit`].
