@@ -8,7 +8,7 @@ use super::Root;
 use crate::fast_math::{ln_at_least_one, max, min, round};
 use crate::ray::Ray;
 use analysis::scene::math_shapes::{JuliaAlgebra, JuliaFunction};
-use glam::{DVec3, DVec4};
+use glam::{DVec2, DVec3, DVec4};
 
 /// How finely a crossing is pinned down, in the fractal's own units.
 const TOLERANCE: f64 = 1e-7;
@@ -37,6 +37,9 @@ pub struct Julia {
     /// is zero), and that part's length: see [`Julia::cube_orbit`].
     pub axis: DVec3,
     pub vector_length: f64,
+    /// Two unit vectors perpendicular to the axis and to each other: the vector part's
+    /// components along them are those across the axis.
+    pub across_axes: (DVec3, DVec3),
 }
 
 impl Julia {
@@ -86,7 +89,13 @@ impl Julia {
             exit,
             axis,
             vector_length,
+            across_axes: axis.any_orthonormal_pair(),
         }
+    }
+
+    /// The components of the vector part `v` across the axis (see [`Julia::across_axes`]).
+    fn across(&self, v: DVec3) -> DVec2 {
+        DVec2::new(v.dot(self.across_axes.0), v.dot(self.across_axes.1))
     }
 
     /// The 4-D point of the slice above `p`.
@@ -153,9 +162,9 @@ impl Julia {
         PlanePoint {
             real: scale * h.x,
             along: scale * v.dot(self.axis),
-            // The cross product keeps the across part accurate where v nearly lies
-            // along the axis, as |v|² - along² would not.
-            across: (scale * scale) * v.cross(self.axis).length_squared(),
+            // The components across keep that part accurate where v nearly lies along
+            // the axis, as |v|² - along² would not.
+            across: (scale * self.across(v)).length_squared(),
         }
     }
 
@@ -741,13 +750,13 @@ struct PlanePoint {
 /// A ray through the slice from `origin` along the unit vector `dir`, and its points in
 /// the coordinates of [`PlanePoint`]: the real part and the along component are linear in
 /// the depth, and the across component is the squared length of a vector that is linear
-/// in it: the cross product of the vector part with the axis.
+/// in it: the vector part's components across the axis.
 struct PlaneLine {
     origin: DVec3,
     dir: DVec3,
     real: (f64, f64),
     along: (f64, f64),
-    across: (DVec3, DVec3),
+    across: (DVec2, DVec2),
 }
 
 impl PlaneLine {
@@ -767,7 +776,7 @@ impl PlaneLine {
             dir,
             real: (scale * start.x, scale * dir.x),
             along: (scale * v.dot(julia.axis), scale * dv.dot(julia.axis)),
-            across: (scale * v.cross(julia.axis), scale * dv.cross(julia.axis)),
+            across: (scale * julia.across(v), scale * julia.across(dv)),
         }
     }
 
