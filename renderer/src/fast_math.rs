@@ -32,6 +32,8 @@ pub fn round(x: f64) -> f64 {
     }
 }
 
+mod ln_table;
+
 /// ln 2 in two parts, the first with its low bits zero, so that k times it is exact for
 /// the exponents of floats.
 const LN_2_HI: f64 = 6.931_471_803_691_238e-1;
@@ -51,15 +53,14 @@ pub fn series_ln(x: f64) -> f64 {
     normal_series_ln(x)
 }
 
-/// The natural logarithm of a positive normal `x`, which the caller knows it to be: in
-/// WebAssembly [`series_ln`] without its test for the values it leaves to the standard
-/// library (a tenth of its instructions), inlined, where the standard one is a call into
-/// a software routine (julia_fractal's march takes one per step); natively the standard
-/// one, which there is the faster.
+/// The natural logarithm of `x`, finite and at least 1, which the caller knows it to be:
+/// in WebAssembly by a table and a short polynomial ([`ln_table::ln_at_least_one`]),
+/// inlined, where the standard one is a call into a software routine (julia_fractal's
+/// march takes one per step); natively the standard one, which there is the faster.
 #[inline]
-pub fn normal_ln(x: f64) -> f64 {
+pub fn ln_at_least_one(x: f64) -> f64 {
     if cfg!(target_arch = "wasm32") {
-        normal_series_ln(x)
+        ln_table::ln_at_least_one(x)
     } else {
         x.ln()
     }
