@@ -26,7 +26,7 @@ pub struct Julia {
     pub min_step: f64,
     /// (min_step · n)² (1 - 1e-9) for quaternion powers n: what a distance estimate's
     /// terms are compared with to show it shorter than the shortest step (see
-    /// [`Julia::square_orbit`]).
+    /// [`Julia::quaternion_orbit`]).
     pub short_bound: f64,
     pub slice: DVec4,
     pub slice_distance: f64,
@@ -34,7 +34,7 @@ pub struct Julia {
     pub radius: f64,
     pub exit: f64,
     /// The unit vector along the parameter's vector part (any unit vector when that part
-    /// is zero), and that part's length: see [`Julia::cube_orbit`].
+    /// is zero), and that part's length: see [`Julia::quaternion_orbit`].
     pub axis: DVec3,
     pub vector_length: f64,
     /// Two unit vectors perpendicular to the axis and to each other: the vector part's
@@ -133,8 +133,8 @@ impl Julia {
     #[inline(always)]
     fn orbit<const KIND: u8, const DISTANCE: bool>(&self, h: DVec4) -> Orbit {
         match KIND {
-            QUATERNION_CUBE => self.cube_orbit::<DISTANCE>(self.plane_point(h, 1.0)),
-            QUATERNION_SQUARE => self.square_orbit::<DISTANCE>(self.plane_point(h, 2.0)),
+            QUATERNION_CUBE => self.quaternion_orbit::<DISTANCE>(self.plane_point(h), 3.0),
+            QUATERNION_SQUARE => self.quaternion_orbit::<DISTANCE>(self.plane_point(h), 2.0),
             _ => self.hypercomplex_orbit::<DISTANCE>(h),
         }
     }
@@ -147,94 +147,28 @@ impl Julia {
         depth: f64,
     ) -> Orbit {
         match KIND {
-            QUATERNION_CUBE => self.cube_orbit::<DISTANCE>(line.at(depth)),
-            QUATERNION_SQUARE => self.square_orbit::<DISTANCE>(line.at(depth)),
+            QUATERNION_CUBE => self.quaternion_orbit::<DISTANCE>(line.at(depth), 3.0),
+            QUATERNION_SQUARE => self.quaternion_orbit::<DISTANCE>(line.at(depth), 2.0),
             _ => self.hypercomplex_orbit::<DISTANCE>(self.lift(line.origin + line.dir * depth)),
         }
     }
 
     /// The point `h` of 4-space in the coordinates of its quaternion orbit's plane (see
-    /// [`Julia::cube_orbit`]), each length multiplied by `scale` (see
-    /// [`Julia::square_orbit`]).
+    /// [`Julia::quaternion_orbit`]).
     #[inline(always)]
-    fn plane_point(&self, h: DVec4, scale: f64) -> PlanePoint {
+    fn plane_point(&self, h: DVec4) -> PlanePoint {
         let v = DVec3::new(h.y, h.z, h.w);
         PlanePoint {
-            real: scale * h.x,
-            along: scale * v.dot(self.axis),
+            real: h.x,
+            along: v.dot(self.axis),
             // The components across keep that part accurate where v nearly lies along
             // the axis, as |v|² - along² would not.
-            across: (scale * self.across(v)).length_squared(),
+            across: self.across(v).length_squared(),
         }
     }
 
-    /// Quaternion squares, followed in the orbit's plane as [`Julia::cube_orbit`] follows
-    /// cubes, but with every length doubled (and so the squared ones, `across` and the
-    /// norms, times four), from a `start` given so. Doubling is exact, so each number is
-    /// twice (or four times) what it would be, bit for bit; but a step then needs neither
-    /// the a + a nor the 4a² that (a, v)² = (a² - |v|², 2a·v) asks for, since (2a)² is
-    /// 4a², and the product of the first k norms comes out already multiplied by the 4^k
-    /// that the distance estimate and the stretch multiply it by. Quaternion norms
-    /// multiply, so the derivative's norm for the distance estimate is 2^k times the
-    /// product of the orbit's norms.
-    #[inline(always)]
-    fn square_orbit<const DISTANCE: bool>(&self, start: PlanePoint) -> Orbit {
-        let (c, vector_length) = (2.0 * self.parameter.x, 2.0 * self.vector_length);
-        let exit = 4.0 * self.exit;
-        let (mut a, mut along, mut across) = (start.real, start.along, start.across);
-        // 4^k times the product of the first k norms.
-        let mut product: f64 = 1.0;
-        let mut peak: f64 = 0.0;
-        // The norm of the last point checked: a bounded orbit's value, its peak, comes
-        // from the points before the last step, which its stretch leaves out.
-        let mut norm;
-        let mut steps = 0;
-        loop {
-            let a2 = a * a;
-            let vector = along * along + across;
-            norm = a2 + vector;
-            if norm > exit {
-                let value = 0.25 * norm - self.exit;
-                if !DISTANCE {
-                    return Orbit::escaped(value, 0.0, product);
-                }
-                // POV-Ray's estimate over the k points of the orbit so far, the escaping
-                // one included: |h|·ln|h|² / (2^k · Π|h_j|). The march never steps
-                // less than min_step, so an estimate shorter than that need not be taken:
-                // ln x ≤ (x - 1)/√x for x ≥ 1 (the escape norm is at least 1) shows it
-                // shorter without the logarithm, as it does at about four in five of the
-                // steps that are. Here both sides are 16 times what they are in the
-                // fractal's units.
-                let excess = norm - 4.0;
-                if excess * excess < norm * product * (4.0 * self.short_bound) {
-                    return Orbit::escaped(value, 0.0, product);
-                }
-                // The escape norm is above 1, and finite: the point before was within the
-                // escape norm, at most 4 and a little.
-                let dist = ln_at_least_one(0.25 * norm) / (product.sqrt() * 2.0);
-                return Orbit::escaped(value, dist, product);
-            }
-            // The peak starts at zero and takes no NaN (no NaN is larger), so a plain
-            // comparison keeps it, without `max`'s test of the peak for NaN: a refinement
-            // runs its orbits to the end, and this is two of the step's instructions.
-            if !DISTANCE && norm > peak {
-                peak = norm;
-            }
-            product *= norm;
-            across *= a2;
-            along = a * along + vector_length;
-            a = 0.5 * (a2 - vector) + c;
-            // Tested after the step: there is at least one iteration.
-            steps += 1;
-            if steps >= self.iterations {
-                break;
-            }
-        }
-        self.bounded::<DISTANCE>(0.25 * peak, product / norm)
-    }
-
-    /// Quaternion cubes. Quaternion norms multiply, so the derivative's norm for the
-    /// distance estimate is 3^k times the product of the orbit's squared norms.
+    /// Quaternion squares or cubes. Quaternion norms multiply, so the derivative's norm
+    /// for the distance estimate is the power times the product of the orbit's norms.
     ///
     /// Both powers scale the vector part v of h = (a, v) by a real number,
     /// (a, v)² = (a² - |v|², 2a·v) and (a, v)³ = (a³ - 3a|v|², (3a² - |v|²)·v), before the
@@ -245,7 +179,7 @@ impl Julia {
     /// arithmetic of a step in four coordinates; the norms, all a march asks for, are
     /// the same but for rounding.
     #[inline(always)]
-    fn cube_orbit<const DISTANCE: bool>(&self, start: PlanePoint) -> Orbit {
+    fn quaternion_orbit<const DISTANCE: bool>(&self, start: PlanePoint, power: f64) -> Orbit {
         let (c, vector_length) = (self.parameter.x, self.vector_length);
         let PlanePoint {
             real: mut a,
@@ -253,41 +187,76 @@ impl Julia {
             mut across,
         } = start;
         let mut product: f64 = 1.0;
+        // Cubes multiply the scale by 3 at each step; squares find 2^k when they need it,
+        // from its bits, which saves the interpreter a multiplication at every step.
         let mut scale = 1.0;
         let mut peak: f64 = 0.0;
-        // As in [`Julia::square_orbit`].
+        // The norm of the last point checked: a bounded orbit's value, its peak, comes
+        // from the points before the last step, which its stretch leaves out.
         let mut norm = 1.0;
-        for _ in 0..self.iterations {
+        for steps in 0..self.iterations {
             let a2 = a * a;
             let vector = along * along + across;
             norm = a2 + vector;
             if norm > self.exit {
+                let scale = if power == 2.0 {
+                    power_of_two(steps)
+                } else {
+                    scale
+                };
                 let value = norm - self.exit;
-                let stretch = (scale * product) * (scale * product);
+                let stretch = stretch(scale, product, power);
                 if !DISTANCE {
                     return Orbit::escaped(value, 0.0, stretch);
                 }
-                // As for squares (see [`Julia::square_orbit`]), with 3^k.
+                // POV-Ray's estimate over the k points of the orbit so far, the escaping
+                // one included: |h|·ln|h|² / (n^k · Π|h_j|). The march never steps
+                // less than min_step, so an estimate shorter than that need not be taken:
+                // ln x ≤ (x - 1)/√x for x ≥ 1 (the escape norm is at least 1) shows it
+                // shorter without the logarithm, as it does at about four in five of the
+                // steps that are. For squares the stretch is the scale² · product this
+                // asks for.
+                let reach = if power == 2.0 {
+                    stretch
+                } else {
+                    scale * scale * product
+                };
                 let excess = norm - 1.0;
-                if excess * excess < norm * (scale * scale * product) * self.short_bound {
+                if excess * excess < norm * reach * self.short_bound {
                     return Orbit::escaped(value, 0.0, stretch);
                 }
-                let dist = ln_at_least_one(norm) / (product.sqrt() * scale * 3.0);
+                // The escape norm is above 1, and finite: the point before was within the
+                // escape norm, at most 4 and a little.
+                let dist = ln_at_least_one(norm) / (product.sqrt() * scale * power);
                 return Orbit::escaped(value, dist, stretch);
             }
-            // As in [`Julia::square_orbit`].
+            // The peak starts at zero and takes no NaN (no NaN is larger), so a plain
+            // comparison keeps it, without `max`'s test of the peak for NaN: a refinement
+            // runs its orbits to the end, and this is two of the step's instructions.
             if !DISTANCE && norm > peak {
                 peak = norm;
             }
             product *= norm;
-            scale *= 3.0;
-            let t = 3.0 * a2 - vector;
-            a = a * (a2 - 3.0 * vector) + c;
-            along = along * t + vector_length;
-            across *= t * t;
+            if power != 2.0 {
+                scale *= power;
+            }
+            if power == 2.0 {
+                across *= 4.0 * a2;
+                along = 2.0 * a * along + vector_length;
+                a = a2 - vector + c;
+            } else {
+                let t = 3.0 * a2 - vector;
+                a = a * (a2 - 3.0 * vector) + c;
+                along = along * t + vector_length;
+                across *= t * t;
+            }
         }
-        let d = (scale / 3.0) * (product / norm);
-        self.bounded::<DISTANCE>(peak, d * d)
+        let scale = if power == 2.0 {
+            power_of_two(self.iterations - 1)
+        } else {
+            scale / power
+        };
+        self.bounded::<DISTANCE>(peak, stretch(scale, product / norm, power))
     }
 
     /// Hypercomplex iteration: the algebra splits into two complex planes,
@@ -541,7 +510,7 @@ impl Julia {
     }
 
     /// [`Julia::gradient`] for quaternion squares (half of it, which points the same way),
-    /// carried forwards in the plane the orbit stays in (see [`Julia::cube_orbit`]):
+    /// carried forwards in the plane the orbit stays in (see [`Julia::quaternion_orbit`]):
     /// the gradients of its three reals with respect to the point, three vectors per step
     /// where the pass backwards through four coordinates needs the orbit kept in memory.
     /// With the real part a, the component u along the axis and the squared component
@@ -680,6 +649,18 @@ impl Julia {
     }
 }
 
+/// The squared norm of a quaternion orbit's derivative after k steps of `power` (2 or 3),
+/// from the power to the k and the product of the orbit's squared norms: each square
+/// stretches by 2|h|, each cube by 3|h|².
+fn stretch(scale: f64, product: f64, power: f64) -> f64 {
+    if power == 2.0 {
+        scale * scale * product
+    } else {
+        let d = scale * product;
+        d * d
+    }
+}
+
 /// Where a value that is `fa` at 0 and `fb` at `width` (of opposite signs) crosses zero:
 /// where the inverse quadratic through those and the `third` point (its position and
 /// value) does, when that lies strictly inside the bracket, and otherwise where the chord
@@ -698,16 +679,16 @@ fn crossing_estimate(width: f64, fa: f64, fb: f64, third: Option<(f64, f64)>) ->
     width * (fa / (fa - fb))
 }
 
+/// 2^k, exactly, as repeated doubling gives it: infinite past 2^1023. The exponent field
+/// of 2^1024 would be all ones, the bits of infinity.
+fn power_of_two(k: u32) -> f64 {
+    f64::from_bits(u64::from(1023 + k.min(1024)) << 52)
+}
+
 /// The iterations a set may be made by, as the `KIND` of [`Julia::orbit`].
 const QUATERNION_SQUARE: u8 = 0;
 const QUATERNION_CUBE: u8 = 1;
 const HYPERCOMPLEX: u8 = 2;
-
-/// What the lengths of a quaternion orbit of the iteration `kind` are multiplied by in
-/// its [`PlanePoint`]s: 2 for squares (see [`Julia::square_orbit`]), 1 for cubes.
-fn plane_scale(kind: u8) -> f64 {
-    if kind == QUATERNION_SQUARE { 2.0 } else { 1.0 }
-}
 
 /// What an orbit tells of its starting point.
 #[derive(Debug, Clone, Copy)]
@@ -738,7 +719,7 @@ impl Orbit {
 }
 
 /// A point of 4-space as the three reals its quaternion orbit follows (see
-/// [`Julia::cube_orbit`]): the real part, and the components of the vector part
+/// [`Julia::quaternion_orbit`]): the real part, and the components of the vector part
 /// along the parameter's vector part and (squared) across it.
 #[derive(Debug, Clone, Copy)]
 struct PlanePoint {
@@ -761,10 +742,8 @@ struct PlaneLine {
 
 impl PlaneLine {
     /// The ray from `origin` along the unit vector `dir`, each pair the value at depth 0
-    /// and the change per unit depth, with lengths doubled for squares (see
-    /// [`Julia::square_orbit`]).
+    /// and the change per unit depth.
     fn new(julia: &Julia, origin: DVec3, dir: DVec3) -> PlaneLine {
-        let scale = plane_scale(julia.kind());
         let start = julia.lift(origin);
         let tilt = -julia.slice.truncate().dot(dir) / julia.slice.w;
         let (v, dv) = (
@@ -774,9 +753,9 @@ impl PlaneLine {
         PlaneLine {
             origin,
             dir,
-            real: (scale * start.x, scale * dir.x),
-            along: (scale * v.dot(julia.axis), scale * dv.dot(julia.axis)),
-            across: (scale * julia.across(v), scale * julia.across(dv)),
+            real: (start.x, dir.x),
+            along: (v.dot(julia.axis), dv.dot(julia.axis)),
+            across: (julia.across(v), julia.across(dv)),
         }
     }
 
@@ -1195,6 +1174,15 @@ mod tests {
     }
 
     #[test]
+    fn a_power_of_two_is_repeated_doubling() {
+        let mut doubled = 1.0_f64;
+        for k in 0..=MAX_ITERATIONS {
+            assert_eq!(power_of_two(k).to_bits(), doubled.to_bits(), "2^{k}");
+            doubled *= 2.0;
+        }
+    }
+
+    #[test]
     fn a_plane_line_is_the_ray_lifted_into_the_plane() {
         let julia = tilted_julia();
         let (origin, dir) = (
@@ -1204,7 +1192,7 @@ mod tests {
         let line = PlaneLine::new(&julia, origin, dir);
         for depth in [0.0, 0.7, 2.2, 4.0] {
             let got = line.at(depth);
-            let want = julia.plane_point(julia.lift(origin + dir * depth), 2.0);
+            let want = julia.plane_point(julia.lift(origin + dir * depth));
             let close = |a: f64, b: f64| (a - b).abs() < 1e-12;
             assert!(
                 close(got.real, want.real)
