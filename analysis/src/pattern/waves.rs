@@ -32,7 +32,10 @@ const POSITIONS: [[f64; 3]; SOURCES] = [
 ];
 
 /// The sources and each one's frequency for `waves`, worked out when the program is built.
-static SOURCE_TABLE: [(DVec3, f64); SOURCES] = sources();
+/// A constant, not a static: [`each_source`] indexes it source by source, and its entries
+/// then become constants in the code, where from a static the plugin loaded each source's
+/// position from memory (thirty loads for each point of a ripples normal).
+const SOURCE_TABLE: [(DVec3, f64); SOURCES] = sources();
 
 const fn sources() -> [(DVec3, f64); SOURCES] {
     let mut table = [(DVec3::ZERO, 0.0); SOURCES];
