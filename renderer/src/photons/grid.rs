@@ -533,21 +533,18 @@ pub fn nearest(
     keep: &mut Vec<Key>,
 ) -> f32 {
     keep.resize(k, 0);
-    // A photon farther than this from the centre is farther than the limit from `p`.
-    let off_centre = p.distance(centre);
-    let mut stop = off_centre + max_d2.sqrt();
     let mut rest = candidates.iter();
     let slots = &mut keep[..k];
-    // Until `k` are kept every photon within `max_d2` is: a key below this one's.
+    // Until `k` are kept every photon within `max_d2` is: a key below this one's. The
+    // photons are not cut off by their distance from the centre here: the list's
+    // photons beyond `max_d2` are few, those from the centre to the cell's edge and
+    // back, and their distances from `p` leave them out as surely.
     let within = key(max_d2, 0);
     let mut count = 0;
     while count < k {
         let Some(candidate) = rest.next() else {
             break;
         };
-        if candidate.from_centre > stop {
-            break;
-        }
         let offered = key(candidate.position.distance_squared(p), candidate.index);
         if offered >= within {
             continue;
@@ -564,9 +561,11 @@ pub fn nearest(
         keep.truncate(count);
         return max_d2;
     }
-    // Then a photon must come before the farthest kept, which it replaces.
+    // Then a photon must come before the farthest kept, which it replaces; one farther
+    // than `stop` from the centre is farther than that from `p`, and so are the rest.
     let mut limit = slots[k - 1];
-    stop = off_centre + squared_distance_of(limit).sqrt();
+    let off_centre = p.distance(centre);
+    let mut stop = off_centre + squared_distance_of(limit).sqrt();
     for candidate in rest {
         if candidate.from_centre > stop {
             break;
