@@ -541,6 +541,9 @@ pub fn nearest(
     // back, and their distances from `p` leave them out as surely.
     let within = key(max_d2, 0);
     let mut count = 0;
+    // The farthest kept so far, 0 while none are: the photons come nearly in order, and
+    // most go after it without reading it back. Keys are never equal (indices differ).
+    let mut farthest = 0;
     while count < k {
         let Some(candidate) = rest.next() else {
             break;
@@ -549,12 +552,17 @@ pub fn nearest(
         if offered >= within {
             continue;
         }
-        let mut i = count;
-        while i > 0 && offered < slots[i - 1] {
-            slots[i] = slots[i - 1];
-            i -= 1;
+        if offered > farthest {
+            slots[count] = offered;
+            farthest = offered;
+        } else {
+            let mut i = count;
+            while i > 0 && offered < slots[i - 1] {
+                slots[i] = slots[i - 1];
+                i -= 1;
+            }
+            slots[i] = offered;
         }
-        slots[i] = offered;
         count += 1;
     }
     if count < k {
