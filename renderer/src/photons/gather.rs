@@ -16,7 +16,7 @@
 //! first looks among the photons around a recent point (a `Neighbourhood`), which settles
 //! it with the very photons the tree would give whenever they are near enough.
 
-use super::grid::{self, CandidateGrid};
+use super::grid::{self, CandidateGrid, Key};
 use super::kdtree::{self, Found, KdTree};
 use analysis::scene::Photons;
 use glam::Vec3;
@@ -36,6 +36,9 @@ pub struct Gather {
 /// next one, usually a neighbour, starts from them.
 #[derive(Debug, Clone, Default)]
 pub struct GatherScratch {
+    /// The photons the last gathering found, as keys (see [`grid::key`]).
+    pub photons: Vec<Key>,
+    /// The photons a search of the tree finds.
     pub found: Vec<Found>,
     wide: Vec<Found>,
     /// The squared distance of the farthest photon of the last full search.
@@ -120,7 +123,7 @@ impl Gather {
         }
     }
 
-    /// Gathers around `p` into `scratch.found`; `None` when no photon counts. `grid`,
+    /// Gathers around `p` into `scratch.photons`; `None` when no photon counts. `grid`,
     /// the tree's [`CandidateGrid`] for this gathering if it has one, serves the points
     /// inside it; with a grid the photons come sorted by distance and then by index
     /// wherever they were found.
@@ -133,31 +136,26 @@ impl Gather {
     ) -> Option<Estimate> {
         let r2 = self.radius * self.radius;
         let area = match grid.and_then(|grid| grid.candidates(p)) {
-            Some(candidates) => grid::nearest(candidates, p, self.max, r2, &mut scratch.found),
+            Some(candidates) => grid::nearest(candidates, p, self.max, r2, &mut scratch.photons),
             None => {
                 let area = self.nearest_without_grid(tree, p, scratch);
-                if grid.is_some() {
-                    sort_canonically(&mut scratch.found);
-                }
+                keys_of(&scratch.found, grid.is_some(), &mut scratch.photons);
                 area
             }
         };
-        let found = &mut scratch.found;
-        if found.len() >= self.min {
-            return estimate(found, area);
+        let photons = &mut scratch.photons;
+        if photons.len() >= self.min {
+            return estimate(photons, area);
         }
         let wide = &mut scratch.wide;
         let wide_area = tree.nearest(p, self.max, 9.0 * r2, None, wide);
-        let density = found.len() as f32 / area;
+        let density = photons.len() as f32 / area;
         let wide_density = wide.len() as f32 / wide_area;
         if wide.len() >= self.expand_min && wide_density > density * (1.0 + self.expand_increase) {
-            return estimate(found, area);
+            return estimate(photons, area);
         }
-        if grid.is_some() {
-            sort_canonically(wide);
-        }
-        std::mem::swap(found, wide);
-        estimate(found, wide_area)
+        keys_of(wide, grid.is_some(), photons);
+        estimate(photons, wide_area)
     }
 
     /// The nearest photons within the first radius, found among a recent point's or
@@ -190,15 +188,20 @@ impl Gather {
     }
 }
 
-/// Puts found photons in the order a grid finds them, by distance and then by index: the
-/// order in which they are summed fixes the rounding of the sums, which must then depend
-/// on the point alone, not on the points a tracer gathered at before (which the
-/// neighbourhood's order does).
-fn sort_canonically(found: &mut [Found]) {
-    found.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+/// The keys of the photons a search of the tree found, into `keys`: in the order a grid
+/// finds them, by distance and then by index, when `canonical`, else in the order found.
+/// With a grid the order in which the photons are summed fixes the rounding of the sums,
+/// which must then depend on the point alone, not on the points a tracer gathered at
+/// before (which the neighbourhood's order does).
+fn keys_of(found: &[Found], canonical: bool, keys: &mut Vec<Key>) {
+    keys.clear();
+    keys.extend(found.iter().map(|&(d2, index)| grid::key(d2, index)));
+    if canonical {
+        keys.sort_unstable();
+    }
 }
 
-fn estimate(found: &[Found], area_radius2: f32) -> Option<Estimate> {
+fn estimate(found: &[Key], area_radius2: f32) -> Option<Estimate> {
     (!found.is_empty() && area_radius2 > 0.0).then_some(Estimate { area_radius2 })
 }
 
@@ -288,11 +291,13 @@ mod tests {
                 assert_eq!(estimate.map(|e| e.area_radius2), Some(area), "{p}");
                 // With a grid, found in the canonical order, by distance and then by
                 // index; without one in no particular order.
-                let mut found = scratch.found.clone();
+                let mut found = scratch.photons.clone();
                 if grid.is_none() {
-                    sort_canonically(&mut found);
+                    found.sort_unstable();
                 }
-                sort_canonically(&mut expected);
+                let mut expected: Vec<Key> =
+                    expected.iter().map(|&(d2, i)| grid::key(d2, i)).collect();
+                expected.sort_unstable();
                 assert_eq!(found, expected, "{p}");
             }
         }
@@ -307,7 +312,7 @@ mod tests {
         let e = gather(1.0)
             .gather(&tree, None, Vec3::new(-2.0, 0.0, 0.0), &mut scratch)
             .unwrap();
-        assert_eq!(scratch.found.len(), 100);
+        assert_eq!(scratch.photons.len(), 100);
         // A hundred photons at 0.01 each fill a disc of area about 1.
         let density = 100.0 / (std::f32::consts::PI * e.area_radius2);
         assert!((density - 100.0).abs() < 12.0, "{density}");
@@ -321,12 +326,12 @@ mod tests {
         // more at a much higher density, so the narrow estimate stands.
         let e = g.gather(&tree, None, Vec3::new(0.4, 0.0, 0.0), &mut scratch);
         assert_eq!(e.unwrap().area_radius2, 0.25);
-        assert!(scratch.found.len() < 20);
+        assert!(scratch.photons.len() < 20);
         // Farther out nothing lies within 0.5; the wide search finds fewer than 40 and
         // is kept.
         let e = g.gather(&tree, None, Vec3::new(1.3, 0.0, 0.0), &mut scratch);
         assert_eq!(e.unwrap().area_radius2, 2.25);
-        assert!(!scratch.found.is_empty() && scratch.found.len() < 40);
+        assert!(!scratch.photons.is_empty() && scratch.photons.len() < 40);
         // Beyond three radii there is nothing.
         assert!(
             g.gather(&tree, None, Vec3::new(1.6, 0.0, 0.0), &mut scratch)

@@ -17,7 +17,7 @@
 //! cells or the lists would take more than a few tens of megabytes. The lists are built
 //! from the photons sorted into bins of a few cells, taken nearest first.
 
-use super::kdtree::{Found, KdTree};
+use super::kdtree::KdTree;
 use crate::parallel::map_indices;
 use glam::{DVec3, Vec3};
 
@@ -495,67 +495,109 @@ fn typical_kth_distance(tree: &KdTree, k: usize, radius: f32) -> f32 {
     *median
 }
 
-/// The up to `k` photons nearest `p` within squared distance `max_d2` among `candidates`
-/// (the list of the cell holding `p`, whose centre is `centre`), into `found` sorted by
-/// squared distance and then by index; returns the squared distance of the farthest one
-/// kept when `k` were found, else `max_d2`. These are the photons [`KdTree::nearest`]
-/// finds, a tie at the farthest going to the lower index.
+/// A found photon as one number: the bits of its squared distance above its index. Squared
+/// distances are never negative or NaN, so that these order as the photons do by distance
+/// and then by index, and the nearest are kept in order by one comparison each and moved
+/// by one load and one store.
+pub type Key = u64;
+
+/// The key of a photon at squared distance `d2` with index `index`.
+#[inline(always)]
+pub fn key(d2: f32, index: u32) -> Key {
+    u64::from(d2.to_bits()) << 32 | u64::from(index)
+}
+
+/// The index of the photon of `key`.
+#[inline(always)]
+pub fn index_of(key: Key) -> u32 {
+    key as u32
+}
+
+/// The squared distance of the photon of `key`.
+#[inline(always)]
+pub fn squared_distance_of(key: Key) -> f32 {
+    f32::from_bits((key >> 32) as u32)
+}
+
+/// The up to `k` (at least one) photons nearest `p` within squared distance `max_d2`
+/// among `candidates` (the list of the cell holding `p`, whose centre is `centre`), into
+/// `keep` as keys in order: by squared distance and then by index; returns the squared
+/// distance of the farthest one kept when `k` were found, else `max_d2`. These are the
+/// photons [`KdTree::nearest`] finds, a tie at the farthest going to the lower index.
 #[inline(always)]
 pub fn nearest(
     (candidates, centre): (&[Candidate], Vec3),
     p: Vec3,
     k: usize,
     max_d2: f32,
-    found: &mut Vec<Found>,
+    keep: &mut Vec<Key>,
 ) -> f32 {
-    if found.len() < k {
-        found.resize(k, (0.0, 0));
-    }
-    let keep = &mut found[..k];
+    keep.resize(k, 0);
+    let mut rest = candidates.iter();
+    let slots = &mut keep[..k];
+    // Until `k` are kept every photon within `max_d2` is: a key below this one's. The
+    // photons are not cut off by their distance from the centre here: the list's
+    // photons beyond `max_d2` are few, those from the centre to the cell's edge and
+    // back, and their distances from `p` leave them out as surely.
+    let within = key(max_d2, 0);
     let mut count = 0;
-    // The farthest photon kept once `k` are: a photon must come before it.
-    let mut limit = (max_d2, 0);
-    // A photon farther than this from the centre is farther than the limit from `p`.
+    // The farthest kept so far, 0 while none are: the photons come nearly in order, and
+    // most go after it without reading it back. Keys are never equal (indices differ).
+    let mut farthest = 0;
+    while count < k {
+        let Some(candidate) = rest.next() else {
+            break;
+        };
+        let offered = key(candidate.position.distance_squared(p), candidate.index);
+        if offered >= within {
+            continue;
+        }
+        if offered > farthest {
+            slots[count] = offered;
+            farthest = offered;
+        } else {
+            let mut i = count;
+            while i > 0 && offered < slots[i - 1] {
+                slots[i] = slots[i - 1];
+                i -= 1;
+            }
+            slots[i] = offered;
+        }
+        count += 1;
+    }
+    if count < k {
+        keep.truncate(count);
+        return max_d2;
+    }
+    // Then a photon must come before the farthest kept, which it replaces; one farther
+    // than `stop` from the centre is farther than that from `p`, and so are the rest.
+    let mut limit = slots[k - 1];
     let off_centre = p.distance(centre);
-    let mut stop = off_centre + max_d2.sqrt();
-    for candidate in candidates {
+    let mut stop = off_centre + squared_distance_of(limit).sqrt();
+    for candidate in rest {
         if candidate.from_centre > stop {
             break;
         }
-        let offered = (candidate.position.distance_squared(p), candidate.index);
-        if !before(offered, limit) {
+        let offered = key(candidate.position.distance_squared(p), candidate.index);
+        if offered >= limit {
             continue;
         }
-        let mut i = count;
-        if count < k {
-            count += 1;
-        } else {
-            i = k - 1;
-        }
-        while i > 0 && before(offered, keep[i - 1]) {
-            keep[i] = keep[i - 1];
+        let mut i = k - 1;
+        while i > 0 && offered < slots[i - 1] {
+            slots[i] = slots[i - 1];
             i -= 1;
         }
-        keep[i] = offered;
-        if count == k {
-            limit = keep[k - 1];
-            stop = off_centre + limit.0.sqrt();
-        }
+        slots[i] = offered;
+        limit = slots[k - 1];
+        stop = off_centre + squared_distance_of(limit).sqrt();
     }
-    found.truncate(count);
-    if count == k { limit.0 } else { max_d2 }
-}
-
-/// Whether `a` is nearer than `b`, or as near with a lower index.
-#[inline(always)]
-fn before(a: Found, b: Found) -> bool {
-    a.0 < b.0 || (a.0 == b.0 && a.1 < b.1)
+    squared_distance_of(limit)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::photons::kdtree::Photon;
+    use crate::photons::kdtree::{Found, Photon};
 
     /// A small linear congruential sequence of numbers in [0, 1).
     fn sequence(seed: u32) -> impl FnMut() -> f32 {
@@ -634,15 +676,19 @@ mod tests {
         let tree = tree(positions);
         let grid = CandidateGrid::build(&tree, k, radius).expect("the grid is built");
         let mut next = sequence(seed);
-        let mut found = Vec::new();
+        let mut keys = Vec::new();
         let mut served = 0;
         for p in queries(&grid, &mut next) {
             let Some(candidates) = grid.candidates(p) else {
                 continue;
             };
             served += 1;
-            let area = nearest(candidates, p, k, radius * radius, &mut found);
+            let area = nearest(candidates, p, k, radius * radius, &mut keys);
             let (expected, expected_area) = brute_force(&tree, p, k, radius * radius);
+            let found: Vec<Found> = keys
+                .iter()
+                .map(|key| (squared_distance_of(*key), index_of(*key)))
+                .collect();
             assert_eq!(found, expected, "{p} k {k} radius {radius}");
             assert_eq!(area, expected_area, "{p}");
         }

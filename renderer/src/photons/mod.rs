@@ -287,8 +287,8 @@ impl PhotonMap {
         // sums apart rather than in an array indexed by the side, which the plugin would
         // keep in memory.
         let (mut front, mut behind) = ((Vec3::ZERO, Vec3::ZERO), (Vec3::ZERO, Vec3::ZERO));
-        for &(_, index) in &scratch.found {
-            let photon = self.tree.photon(index);
+        for &key in &scratch.photons {
+            let photon = self.tree.photon(grid::index_of(key));
             let from = -photon.direction;
             let add = |(power, direction): &mut (Vec3, Vec3)| {
                 *power += photon.power;
