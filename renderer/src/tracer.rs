@@ -920,15 +920,16 @@ impl<'w> Tracer<'w> {
         }
         // The interiors the shadow ray is inside, for distance fading and media; it starts
         // outside everything, as POV-Ray's shadow rays do, unless it leaves a media sample.
-        let mut inside = std::mem::take(&mut self.shadow_inside);
-        inside.clone_from(&self.shadow_start);
+        // The list is made at the first transparent occluder: most shadow rays meet none,
+        // and are inside `shadow_start`'s interiors all the way.
+        let mut inside: Option<Vec<&'w Interior>> = None;
         // Each transparent occluder filters the light and the search goes on beyond it;
         // the bound stops a pathological stack of surfaces.
         let arriving = 'crossing: {
             for _ in 0..64 {
                 let Some(hit) = self.world.bvh.occluder(&q, &mut self.scratch) else {
                     let end = origin + direction * remaining;
-                    for interior in &inside {
+                    for interior in inside.as_ref().unwrap_or(&self.shadow_start) {
                         colour *= interior.media_transmittance(origin, end);
                     }
                     break 'crossing colour;
@@ -946,6 +947,11 @@ impl<'w> Tracer<'w> {
                 colour *=
                     leaf.transmitted_at(&leaf.texture_point(point, hit.part, &q.ray), hit.part);
                 let interior: &'w Interior = &leaf.interior;
+                let inside = inside.get_or_insert_with(|| {
+                    let mut list = std::mem::take(&mut self.shadow_inside);
+                    list.clone_from(&self.shadow_start);
+                    list
+                });
                 match inside.iter().position(|i| std::ptr::eq(*i, interior)) {
                     Some(at) => {
                         colour *= fade(interior, hit.t);
@@ -963,7 +969,9 @@ impl<'w> Tracer<'w> {
             }
             DVec3::ZERO
         };
-        self.shadow_inside = inside;
+        if let Some(list) = inside {
+            self.shadow_inside = list;
+        }
         arriving
     }
 
