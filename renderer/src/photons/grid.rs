@@ -383,7 +383,7 @@ impl Bins {
                 if f64::from(distance) > reach {
                     continue;
                 }
-                out.push(u64::from(distance.to_bits()) << 32 | u64::from(index));
+                out.push(key(distance, index));
                 if nearest.len() < k || distance < nearest[k - 1] {
                     let i = nearest.partition_point(|d| *d <= distance);
                     nearest.insert(i, distance);
@@ -400,7 +400,7 @@ impl Bins {
             out.clear();
             return false;
         }
-        out.retain(|key| f64::from(f32::from_bits((key >> 32) as u32)) <= reach);
+        out.retain(|&key| f64::from(distance_of(key)) <= reach);
         out.sort_unstable();
         true
     }
@@ -439,14 +439,16 @@ impl Layout {
                 let reach = list_reach(kth, h, radius);
                 within.clear();
                 tree.within(centre, (reach * reach) as f32, &mut within);
-                keys.extend(within.iter().map(|&(p, index)| {
-                    u64::from(p.distance(centre).to_bits()) << 32 | u64::from(index)
-                }));
+                keys.extend(
+                    within
+                        .iter()
+                        .map(|&(p, index)| key(p.distance(centre), index)),
+                );
                 keys.sort_unstable();
             }
             let start = list.len();
-            list.extend(keys.iter().map(|key| {
-                let (distance, index) = (f32::from_bits((key >> 32) as u32), *key as u32);
+            list.extend(keys.iter().map(|&key| {
+                let (distance, index) = (distance_of(key), index_of(key));
                 Candidate {
                     position: positions[index as usize],
                     from_centre: (f64::from(distance) * (1.0 - SLACK)) as f32,
@@ -495,16 +497,17 @@ fn typical_kth_distance(tree: &KdTree, k: usize, radius: f32) -> f32 {
     *median
 }
 
-/// A found photon as one number: the bits of its squared distance above its index. Squared
-/// distances are never negative or NaN, so that these order as the photons do by distance
-/// and then by index, and the nearest are kept in order by one comparison each and moved
-/// by one load and one store.
+/// A photon as one number: the bits of its distance (a search's squared distance from its
+/// point, a list's distance from its cell's centre) above its index. Distances are never
+/// negative or NaN, so that these order as the photons do by distance and then by index,
+/// and the nearest are kept in order by one comparison each and moved by one load and
+/// one store.
 pub type Key = u64;
 
-/// The key of a photon at squared distance `d2` with index `index`.
+/// The key of a photon at distance (or squared distance) `d` with index `index`.
 #[inline(always)]
-pub fn key(d2: f32, index: u32) -> Key {
-    u64::from(d2.to_bits()) << 32 | u64::from(index)
+pub fn key(d: f32, index: u32) -> Key {
+    u64::from(d.to_bits()) << 32 | u64::from(index)
 }
 
 /// The index of the photon of `key`.
@@ -513,9 +516,9 @@ pub fn index_of(key: Key) -> u32 {
     key as u32
 }
 
-/// The squared distance of the photon of `key`.
+/// The distance (or squared distance) `key` was made with.
 #[inline(always)]
-pub fn squared_distance_of(key: Key) -> f32 {
+pub fn distance_of(key: Key) -> f32 {
     f32::from_bits((key >> 32) as u32)
 }
 
@@ -573,7 +576,7 @@ pub fn nearest(
     // than `stop` from the centre is farther than that from `p`, and so are the rest.
     let mut limit = slots[k - 1];
     let off_centre = p.distance(centre);
-    let mut stop = off_centre + squared_distance_of(limit).sqrt();
+    let mut stop = off_centre + distance_of(limit).sqrt();
     for candidate in rest {
         if candidate.from_centre > stop {
             break;
@@ -589,9 +592,9 @@ pub fn nearest(
         }
         slots[i] = offered;
         limit = slots[k - 1];
-        stop = off_centre + squared_distance_of(limit).sqrt();
+        stop = off_centre + distance_of(limit).sqrt();
     }
-    squared_distance_of(limit)
+    distance_of(limit)
 }
 
 #[cfg(test)]
@@ -687,7 +690,7 @@ mod tests {
             let (expected, expected_area) = brute_force(&tree, p, k, radius * radius);
             let found: Vec<Found> = keys
                 .iter()
-                .map(|key| (squared_distance_of(*key), index_of(*key)))
+                .map(|key| (distance_of(*key), index_of(*key)))
                 .collect();
             assert_eq!(found, expected, "{p} k {k} radius {radius}");
             assert_eq!(area, expected_area, "{p}");
