@@ -17,6 +17,10 @@ pub struct Sample {
 }
 
 impl Sample {
+    /// What a camera position without a ray shows: POV-Ray leaves such pixels fully
+    /// transparent.
+    pub const NO_RAY: Sample = Sample::new(DVec3::ZERO, 1.0);
+
     pub const fn new(colour: DVec3, transmit: f64) -> Sample {
         Sample { colour, transmit }
     }

@@ -144,9 +144,12 @@ fn centres(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
     map_indices((region.y1 - region.y0 + 1) as usize, |row| {
         let mut tracer = Tracer::new(sampler.world);
         let y = f64::from(region.y0) + row as f64 + 0.5;
-        (region.x0..=region.x1)
-            .map(|x| sampler.trace(&mut tracer, f64::from(x) + 0.5, y))
-            .collect()
+        let points: Vec<(f64, f64)> = (region.x0..=region.x1)
+            .map(|x| (f64::from(x) + 0.5, y))
+            .collect();
+        let mut samples = Vec::with_capacity(points.len());
+        sampler.trace_all(&mut tracer, &points, &mut samples);
+        samples
     })
 }
 
@@ -238,9 +241,12 @@ fn method2(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
     let corners: Vec<Vec<Compared>> = map_indices(corner_rows, |row| {
         let mut tracer = Tracer::new(sampler.world);
         let y = f64::from(region.y0) + row as f64;
-        (region.x0..=region.x1 + 1)
-            .map(|x| sampler.compared(sampler.trace(&mut tracer, f64::from(x), y)))
-            .collect()
+        let points: Vec<(f64, f64)> = (region.x0..=region.x1 + 1)
+            .map(|x| (f64::from(x), y))
+            .collect();
+        let mut samples = Vec::with_capacity(points.len());
+        sampler.trace_all(&mut tracer, &points, &mut samples);
+        samples.into_iter().map(|s| sampler.compared(s)).collect()
     });
     // Runs of rows share one subdivider, which passes the samples on the edges between
     // them from row to row; the runs are traced in parallel where threads exist.

@@ -58,6 +58,21 @@ impl Sampler<'_> {
         trace_camera_ray(tracer, ray.as_ref())
     }
 
+    /// The samples at the image positions `points`, in order, appended to `out`: each as
+    /// [`Sampler::trace`] gives it, but through a camera without focal blur all the rays'
+    /// nearest hits are found before any is shaded (see [`Tracer::trace_primaries`]).
+    pub fn trace_all(&self, tracer: &mut Tracer<'_>, points: &[(f64, f64)], out: &mut Vec<Sample>) {
+        if self.camera.focal_blur.is_some() {
+            out.extend(points.iter().map(|&(x, y)| self.trace(tracer, x, y)));
+            return;
+        }
+        let rays: Vec<Option<Ray>> = points
+            .iter()
+            .map(|&(x, y)| self.camera.ray(x, y, self.width, self.height))
+            .collect();
+        tracer.trace_primaries(&rays, out);
+    }
+
     /// [`Sampler::trace`] through a camera with focal blur: kept out of line, so that the
     /// interpreted plugin's calls of the common case set up no room for it.
     #[inline(never)]
@@ -133,8 +148,7 @@ pub struct Compared {
 fn trace_camera_ray(tracer: &mut Tracer<'_>, ray: Option<&Ray>) -> Sample {
     match ray {
         Some(ray) => tracer.trace_primary(ray),
-        // POV-Ray leaves such pixels fully transparent.
-        None => Sample::new(glam::DVec3::ZERO, 1.0),
+        None => Sample::NO_RAY,
     }
 }
 
