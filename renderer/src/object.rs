@@ -9,7 +9,7 @@ use crate::bounds::Aabb;
 use crate::csg_spans::{ChildSpans, Meeting};
 use crate::fast_math;
 use crate::interior::Interior;
-use crate::material::{Layer, Material, transmitted_through};
+use crate::material::{Layer, Material, Surface, transmitted_through};
 use crate::photons::SurfacePhotons;
 use crate::ray::{Ray, RayKind};
 use crate::shapes::{Root, Roots, Shape, Span};
@@ -330,6 +330,16 @@ impl Leaf {
             }
         }
         self.material.surface.for_each_layers(at, 1.0, f);
+    }
+
+    /// The one stack of layers the whole surface shows, where it has no texture map, blend
+    /// or per-face textures: what [`Leaf::for_each_layers`] calls its function with, at a
+    /// weight of 1, wherever the surface is.
+    pub fn single_stack(&self) -> Option<&[Layer]> {
+        match &self.material.surface {
+            Surface::Layers(layers) if self.face_materials.is_empty() => Some(layers),
+            _ => None,
+        }
     }
 
     /// The one layer of an opaque surface without bumps or reflection (see
