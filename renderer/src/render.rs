@@ -248,30 +248,31 @@ fn method2(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
         sampler.trace_all(&mut tracer, &points, &mut samples);
         samples.into_iter().map(|s| sampler.compared(s)).collect()
     });
-    // Runs of rows share one subdivider, which passes the samples on the edges between
-    // them from row to row; the runs are traced in parallel where threads exist.
+    // Runs of rows share their subdividers, which keep the samples on the edges between
+    // them from row to row; the runs are traced in parallel where threads exist. A wide
+    // picture subdivided deeply goes down each run in strips of columns, which a
+    // subdivider holds one at a time.
     let rows = corner_rows - 1;
+    let columns = region.columns();
+    let strip = Subdivider::columns_held(sampler.depth);
     let runs = map_indices(rows.div_ceil(SHARED_ROWS), |run| {
         let mut tracer = Tracer::new(sampler.world);
-        let mut subdivider = Subdivider::new(sampler.depth, region.columns());
-        (run * SHARED_ROWS..(run + 1).saturating_mul(SHARED_ROWS).min(rows))
-            .map(|row| {
-                subdivider.start_row();
-                // Each pixel's corners from the windows of its two corner rows, without the
-                // eight bounds checks of indexing them, paid for every pixel.
-                let (top, bottom) = (&corners[row], &corners[row + 1]);
-                top.windows(2)
-                    .zip(bottom.windows(2))
-                    .enumerate()
-                    .map(|(col, (t, b))| {
-                        let c = [&t[0], &t[1], &b[0], &b[1]];
-                        let x = region.x0 + col as u32;
-                        let y = region.y0 + row as u32;
-                        subdivider.pixel(sampler, &mut tracer, (col, x, y), c)
-                    })
-                    .collect()
-            })
-            .collect::<Vec<Vec<Sample>>>()
+        let run_rows = run * SHARED_ROWS..(run + 1).saturating_mul(SHARED_ROWS).min(rows);
+        let mut pixels = vec![vec![Sample::default(); columns]; run_rows.len()];
+        for first in (0..columns).step_by(strip) {
+            let end = (first + strip).min(columns);
+            let mut subdivider = Subdivider::new(sampler, end - first);
+            for (row, out) in run_rows.clone().zip(&mut pixels) {
+                subdivider.row(
+                    sampler,
+                    &mut tracer,
+                    (region.x0 + first as u32, region.y0 + row as u32),
+                    [&corners[row][first..=end], &corners[row + 1][first..=end]],
+                    &mut out[first..end],
+                );
+            }
+        }
+        pixels
     });
     runs.into_iter().flatten().collect()
 }
@@ -280,6 +281,7 @@ fn method2(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
 mod tests {
     use super::*;
     use crate::camera::Camera;
+    use crate::tracer::World;
     use analysis::scene::{self, Colour, Finish, Light, Object, Pigment, Shape, Texture};
     use glam::DVec3;
     use std::sync::Arc;
@@ -445,8 +447,8 @@ mod tests {
         }
     }
 
-    #[test]
-    fn pixels_sharing_edge_samples_match_pixels_sampled_alone() {
+    /// The orange sphere's world, at full quality, and camera.
+    fn orange_sphere_world() -> (World, Camera) {
         let scene = orange_sphere();
         let settings = BuildSettings {
             quality: 9,
@@ -454,7 +456,34 @@ mod tests {
             max_trace_level: None,
         };
         let world = build_world(&scene, settings).unwrap();
-        let camera = Camera::from_scene(&scene.camera).unwrap();
+        (world, Camera::from_scene(&scene.camera).unwrap())
+    }
+
+    /// A method 2 sampler of a `width` × `height` picture, with full jitter.
+    fn method2_sampler<'a>(
+        (world, camera): &'a (World, Camera),
+        (width, height): (u32, u32),
+        threshold: f64,
+        depth: u32,
+    ) -> Sampler<'a> {
+        Sampler {
+            world,
+            camera,
+            width: f64::from(width),
+            height: f64::from(height),
+            threshold,
+            depth,
+            jitter: 1.0,
+            compare: CompareCurve {
+                working: Curve::Identity,
+                aa: EncodeTable::new(Curve::Power(2.5)),
+            },
+        }
+    }
+
+    #[test]
+    fn pixels_sharing_edge_samples_match_pixels_sampled_alone() {
+        let scene = orange_sphere_world();
         let (width, height) = (24, 18);
         let region = Region {
             x0: 0,
@@ -462,24 +491,11 @@ mod tests {
             y0: 0,
             y1: height - 1,
         };
-        let compare = CompareCurve {
-            working: Curve::Identity,
-            aa: EncodeTable::new(Curve::Power(2.5)),
-        };
         // A threshold of 0 splits every pixel down to the last level, so that every edge
         // sample is shared.
-        let sampler = Sampler {
-            world: &world,
-            camera: &camera,
-            width: f64::from(width),
-            height: f64::from(height),
-            threshold: 0.0,
-            depth: 3,
-            jitter: 1.0,
-            compare,
-        };
+        let sampler = method2_sampler(&scene, (width, height), 0.0, 3);
         let shared = method2(&sampler, &region);
-        let mut tracer = Tracer::new(&world);
+        let mut tracer = Tracer::new(&scene.0);
         let mut corner = |x: u32, y: u32| {
             sampler.compared(sampler.trace(&mut tracer, f64::from(x), f64::from(y)))
         };
@@ -491,15 +507,93 @@ mod tests {
                     corner(x, y + 1),
                     corner(x + 1, y + 1),
                 ];
-                let mut alone = Subdivider::new(sampler.depth, 1);
-                let mut tracer = Tracer::new(&world);
-                let s = alone.pixel(
+                let mut alone = [Sample::default()];
+                Subdivider::new(&sampler, 1).row(
                     &sampler,
-                    &mut tracer,
-                    (0, x, y),
-                    [&c[0], &c[1], &c[2], &c[3]],
+                    &mut Tracer::new(&scene.0),
+                    (x, y),
+                    [&c[..2], &c[2..]],
+                    &mut alone,
                 );
-                assert_eq!(shared[y as usize][x as usize], s, "{x} {y}");
+                assert_eq!(shared[y as usize][x as usize], alone[0], "{x} {y}");
+            }
+        }
+    }
+
+    /// Method 2's pixel `(x, y)` as one square after another traces it, one sample at a
+    /// time: each square traces all its corners when it needs them.
+    fn subdivided_one_at_a_time(sampler: &Sampler<'_>, (x, y): (u32, u32)) -> Sample {
+        fn square(
+            sampler: &Sampler<'_>,
+            at: &mut impl FnMut(u32, u32) -> Sample,
+            (bx, by): (u32, u32),
+            step: u32,
+            level: u32,
+        ) -> Sample {
+            let c = [
+                at(bx, by),
+                at(bx + step, by),
+                at(bx, by + step),
+                at(bx + step, by + step),
+            ];
+            let compared = c.map(|s| sampler.compare.apply(s));
+            let differ = (0..4).any(|i| {
+                (i + 1..4).any(|j| compared[i].distance(compared[j]) >= sampler.threshold)
+            });
+            if level == 0 || step < 2 || !differ {
+                return (c[0] + c[1] + c[2] + c[3]) * 0.25;
+            }
+            let half = step / 2;
+            let mut sum = Sample::default();
+            for quarter in [
+                (bx, by),
+                (bx + half, by),
+                (bx, by + half),
+                (bx + half, by + half),
+            ] {
+                sum = sum + square(sampler, at, quarter, half, level - 1);
+            }
+            sum * 0.25
+        }
+        let mut tracer = Tracer::new(sampler.world);
+        let last = 1 << (sampler.depth - 1);
+        let unit = 1.0 / f64::from(last);
+        let scale = sampler.jitter / f64::from((1 << sampler.depth) + 1);
+        let mut at = |gx: u32, gy: u32| {
+            let px = f64::from(x) + f64::from(gx) * unit;
+            let py = f64::from(y) + f64::from(gy) * unit;
+            // The pixel's corners are traced where they lie, the other points jittered.
+            let (px, py) = if gx.is_multiple_of(last) && gy.is_multiple_of(last) {
+                (px, py)
+            } else {
+                sampler.jittered(px, py, scale)
+            };
+            sampler.trace(&mut tracer, px, py)
+        };
+        square(sampler, &mut at, (0, 0), last, sampler.depth - 1)
+    }
+
+    #[test]
+    fn subdivision_in_rounds_takes_the_samples_of_one_at_a_time() {
+        let scene = orange_sphere_world();
+        // The sphere's outline splits pixels to different depths. At depth 7 a subdivider
+        // holds 31 columns, so that the 40 of the picture are sampled in two strips.
+        assert_eq!(Subdivider::columns_held(7), 31);
+        for (size, depth) in [((24, 18), 4), ((40, 30), 7)] {
+            let region = Region {
+                x0: 0,
+                x1: size.0 - 1,
+                y0: size.1 / 2 - 3,
+                y1: size.1 / 2 + 2,
+            };
+            let sampler = method2_sampler(&scene, size, 0.1, depth);
+            let batched = method2(&sampler, &region);
+            for y in region.y0..=region.y1 {
+                for x in region.x0..=region.x1 {
+                    let alone = subdivided_one_at_a_time(&sampler, (x, y));
+                    let row = &batched[(y - region.y0) as usize];
+                    assert_eq!(row[x as usize], alone, "depth {depth}: {x} {y}");
+                }
             }
         }
     }

@@ -15,6 +15,10 @@ use crate::mesh_camera::MeshRays;
 use crate::ray::Ray;
 use crate::tracer::{Tracer, World};
 
+mod subdivider;
+
+pub use subdivider::Subdivider;
+
 /// Everything needed to turn image positions into samples.
 pub struct Sampler<'a> {
     pub world: &'a World,
@@ -126,13 +130,20 @@ impl Sampler<'_> {
         (a - 0.5, b - 0.5)
     }
 
-    fn trace_jittered(&self, tracer: &mut Tracer<'_>, x: f64, y: f64, scale: f64) -> Sample {
+    /// Where the sample meant for image position `(x, y)` is taken: moved by up to half
+    /// of `scale` each way, by [`Sampler::jitter_at`].
+    pub(crate) fn jittered(&self, x: f64, y: f64, scale: f64) -> (f64, f64) {
         if scale > 0.0 {
             let (jx, jy) = self.jitter_at(x, y);
-            self.trace(tracer, x + jx * scale, y + jy * scale)
+            (x + jx * scale, y + jy * scale)
         } else {
-            self.trace(tracer, x, y)
+            (x, y)
         }
+    }
+
+    fn trace_jittered(&self, tracer: &mut Tracer<'_>, x: f64, y: f64, scale: f64) -> Sample {
+        let (x, y) = self.jittered(x, y, scale);
+        self.trace(tracer, x, y)
     }
 }
 
@@ -163,207 +174,6 @@ fn mix(mut z: u64) -> u64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
     z ^ (z >> 31)
-}
-
-/// Method 2 for the pixels of a run of rows, left to right and top to bottom, whose
-/// corner samples are known. A pixel's edges are its neighbours' too: the samples a split
-/// pixel traces on its right and bottom edges are kept for the pixel right of it and the
-/// one below, which would trace the very same positions (the jitter follows the position).
-pub struct Subdivider {
-    /// Samples of the current pixel on a grid of `side` × `side` points.
-    grid: Vec<Compared>,
-    /// The pixel generation that last wrote each grid point, so that the grid is never
-    /// cleared.
-    stamp: Vec<u32>,
-    generation: u32,
-    side: usize,
-    /// The samples the previous pixel of the row traced on its right edge, by grid row.
-    left: Vec<(usize, Compared)>,
-    /// For each column, the samples the pixel above traced on its bottom edge, by grid
-    /// column.
-    above: Vec<Vec<(usize, Compared)>>,
-}
-
-impl Subdivider {
-    pub fn new(depth: u32, columns: usize) -> Subdivider {
-        let side = (1usize << depth.saturating_sub(1)) + 1;
-        Subdivider {
-            grid: vec![Compared::default(); side * side],
-            stamp: vec![0; side * side],
-            generation: 0,
-            side,
-            left: Vec::new(),
-            above: vec![Vec::new(); columns],
-        }
-    }
-
-    /// Starts a row: its first pixel has no neighbour on the left.
-    pub fn start_row(&mut self) {
-        self.left.clear();
-    }
-
-    /// The pixel at `(x, y)` in column `col` of the run.
-    pub fn pixel(
-        &mut self,
-        sampler: &Sampler<'_>,
-        tracer: &mut Tracer<'_>,
-        (col, x, y): (usize, u32, u32),
-        corners: [&Compared; 4],
-    ) -> Sample {
-        // Most pixels are not split: their corners are averaged where they lie, without
-        // being copied into the grid first.
-        if sampler.depth <= 1 || !differ_at_corners(corners, sampler.threshold) {
-            self.left.clear();
-            self.above[col].clear();
-            return mean_of_corners(corners);
-        }
-        self.generation = self.generation.wrapping_add(1);
-        if self.generation == 0 {
-            self.stamp.fill(0);
-            self.generation = 1;
-        }
-        let last = self.side - 1;
-        self.set(0, 0, *corners[0]);
-        self.set(last, 0, *corners[1]);
-        self.set(0, last, *corners[2]);
-        self.set(last, last, *corners[3]);
-        let mut left = std::mem::take(&mut self.left);
-        for &(gy, s) in &left {
-            self.set(0, gy, s);
-        }
-        let mut above = std::mem::take(&mut self.above[col]);
-        for &(gx, s) in &above {
-            self.set(gx, 0, s);
-        }
-        // POV-Ray divides the jitter amount by 2^depth + 1.
-        let scale = sampler.jitter / f64::from((1u32 << sampler.depth) + 1);
-        let mean = self.square(
-            sampler,
-            tracer,
-            (f64::from(x), f64::from(y)),
-            (0, 0),
-            last,
-            sampler.depth.saturating_sub(1),
-            scale,
-        );
-        // The lists keep their allocations from pixel to pixel.
-        left.clear();
-        left.extend((1..last).filter_map(|gy| self.traced(last, gy).map(|s| (gy, s))));
-        self.left = left;
-        above.clear();
-        above.extend((1..last).filter_map(|gx| self.traced(gx, last).map(|s| (gx, s))));
-        self.above[col] = above;
-        mean
-    }
-
-    /// The sample at a grid point if the current pixel has one there.
-    fn traced(&self, bx: usize, by: usize) -> Option<Compared> {
-        let i = by * self.side + bx;
-        (self.stamp[i] == self.generation).then_some(self.grid[i])
-    }
-
-    fn set(&mut self, bx: usize, by: usize, s: Compared) {
-        let i = by * self.side + bx;
-        self.grid[i] = s;
-        self.stamp[i] = self.generation;
-    }
-
-    fn get(&self, bx: usize, by: usize) -> &Compared {
-        &self.grid[by * self.side + bx]
-    }
-
-    /// The mean over the square with top-left grid point `(bx, by)` and `step` points
-    /// across, subdividing while `level` allows and the corners differ.
-    #[allow(clippy::too_many_arguments)]
-    fn square(
-        &mut self,
-        sampler: &Sampler<'_>,
-        tracer: &mut Tracer<'_>,
-        pixel: (f64, f64),
-        (bx, by): (usize, usize),
-        step: usize,
-        level: u32,
-        jitter: f64,
-    ) -> Sample {
-        let c = [
-            self.get(bx, by),
-            self.get(bx + step, by),
-            self.get(bx, by + step),
-            self.get(bx + step, by + step),
-        ];
-        let split = level > 0 && step >= 2 && differ_at_corners(c, sampler.threshold);
-        if !split {
-            return mean_of_corners(c);
-        }
-        let half = step / 2;
-        let unit = 1.0 / (self.side - 1) as f64;
-        for (gx, gy) in [
-            (bx, by + half),
-            (bx + half, by),
-            (bx + step, by + half),
-            (bx + half, by + step),
-            (bx + half, by + half),
-        ] {
-            let i = gy * self.side + gx;
-            if self.stamp[i] != self.generation {
-                let px = pixel.0 + gx as f64 * unit;
-                let py = pixel.1 + gy as f64 * unit;
-                let s = sampler.trace_jittered(tracer, px, py, jitter);
-                self.set(gx, gy, sampler.compared(s));
-            }
-        }
-        let mut sum = Sample::default();
-        for (qx, qy) in [
-            (bx, by),
-            (bx + half, by),
-            (bx, by + half),
-            (bx + half, by + half),
-        ] {
-            sum = sum + self.square(sampler, tracer, pixel, (qx, qy), half, level - 1, jitter);
-        }
-        sum * 0.25
-    }
-}
-
-/// Whether some two of a square's corners differ by the threshold or more. No two differ
-/// by more than the corners' spread (the sum of each channel's range), which most squares
-/// keep below the threshold: those need no comparing of pairs. Rounding keeps the bound,
-/// since each pair's distance is the same sum of differences no larger than the ranges.
-/// The ranges take plain comparisons, a handful of instructions each: a NaN skips them
-/// unless it comes first, and then the spread is NaN and the pairs are compared, in which
-/// a NaN never differs.
-/// Inlined always: every pixel asks, and WebAssembly kept it a call, whose cost in the
-/// interpreter was more than the inlined copies' (clebsch in wasmi: 1.1% of the compile).
-#[inline(always)]
-fn differ_at_corners(c: [&Compared; 4], threshold: f64) -> bool {
-    let range = |channel: fn(&Sample) -> f64| {
-        let first = channel(&c[0].encoded);
-        let (mut lo, mut hi) = (first, first);
-        for s in &c[1..] {
-            let v = channel(&s.encoded);
-            if v < lo {
-                lo = v;
-            }
-            if v > hi {
-                hi = v;
-            }
-        }
-        hi - lo
-    };
-    // Summed in the order `Sample::distance` sums a pair's differences.
-    let spread = range(|s| s.colour.x)
-        + range(|s| s.colour.y)
-        + range(|s| s.colour.z)
-        + range(|s| s.transmit);
-    if spread < threshold {
-        return false;
-    }
-    (0..4).any(|i| (i + 1..4).any(|j| c[i].encoded.distance(c[j].encoded) >= threshold))
-}
-
-/// The mean of a square's corner samples.
-fn mean_of_corners(c: [&Compared; 4]) -> Sample {
-    (c[0].sample + c[1].sample + c[2].sample + c[3].sample) * 0.25
 }
 
 /// Method 1: supersamples on a `depth` × `depth` grid, averaged with the centre sample.
