@@ -171,8 +171,10 @@ fn method1(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
     let cols = region.columns();
     map_indices(rows, |row| {
         let mut tracer = Tracer::new(sampler.world);
-        (0..cols)
-            .map(|col| {
+        // The row's supersampled pixels, and their grids' positions in one batch.
+        let mut positions = Vec::new();
+        let split: Vec<usize> = (0..cols)
+            .filter(|&col| {
                 let c = centres[row][col];
                 let mut neighbours = [c; 4];
                 if col > 0 {
@@ -187,15 +189,21 @@ fn method1(sampler: &Sampler<'_>, region: &Region) -> Vec<Vec<Sample>> {
                 if row + 1 < rows {
                     neighbours[3] = centres[row + 1][col];
                 }
-                if sampling::needs_supersampling(sampler, c, &neighbours) {
-                    let x = region.x0 + col as u32;
-                    let y = region.y0 + row as u32;
-                    sampling::supersample_grid(sampler, &mut tracer, x, y, c)
-                } else {
-                    c
-                }
+                sampling::needs_supersampling(sampler, c, &neighbours)
             })
-            .collect()
+            .inspect(|&col| {
+                let (x, y) = (region.x0 + col as u32, region.y0 + row as u32);
+                positions.extend(sampling::grid_positions(sampler, x, y));
+            })
+            .collect();
+        let mut samples = Vec::with_capacity(positions.len());
+        sampler.trace_all(&mut tracer, &positions, &mut samples);
+        let mut pixels = centres[row].clone();
+        let per_pixel = sampling::grid_points(sampler);
+        for (&col, grid) in split.iter().zip(samples.chunks(per_pixel)) {
+            pixels[col] = sampling::grid_mean(pixels[col], grid);
+        }
+        pixels
     })
 }
 
@@ -459,8 +467,17 @@ mod tests {
         (world, Camera::from_scene(&scene.camera).unwrap())
     }
 
-    /// A method 2 sampler of a `width` × `height` picture, with full jitter.
-    fn method2_sampler<'a>(
+    fn whole_picture(width: u32, height: u32) -> Region {
+        Region {
+            x0: 0,
+            x1: width - 1,
+            y0: 0,
+            y1: height - 1,
+        }
+    }
+
+    /// A sampler of a `width` × `height` picture, with full jitter.
+    fn test_sampler<'a>(
         (world, camera): &'a (World, Camera),
         (width, height): (u32, u32),
         threshold: f64,
@@ -485,15 +502,10 @@ mod tests {
     fn pixels_sharing_edge_samples_match_pixels_sampled_alone() {
         let scene = orange_sphere_world();
         let (width, height) = (24, 18);
-        let region = Region {
-            x0: 0,
-            x1: width - 1,
-            y0: 0,
-            y1: height - 1,
-        };
+        let region = whole_picture(width, height);
         // A threshold of 0 splits every pixel down to the last level, so that every edge
         // sample is shared.
-        let sampler = method2_sampler(&scene, (width, height), 0.0, 3);
+        let sampler = test_sampler(&scene, (width, height), 0.0, 3);
         let shared = method2(&sampler, &region);
         let mut tracer = Tracer::new(&scene.0);
         let mut corner = |x: u32, y: u32| {
@@ -586,7 +598,7 @@ mod tests {
                 y0: size.1 / 2 - 3,
                 y1: size.1 / 2 + 2,
             };
-            let sampler = method2_sampler(&scene, size, 0.1, depth);
+            let sampler = test_sampler(&scene, size, 0.1, depth);
             let batched = method2(&sampler, &region);
             for y in region.y0..=region.y1 {
                 for x in region.x0..=region.x1 {
@@ -596,6 +608,36 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Method 1 traces a row's supersampling grids in one batch: each pixel is still its
+    /// centre averaged with its grid's samples, each traced alone at its jittered position.
+    #[test]
+    fn method_one_grids_in_a_batch_take_the_samples_of_one_at_a_time() {
+        let scene = orange_sphere_world();
+        let (width, height) = (24, 18);
+        let region = whole_picture(width, height);
+        let sampler = test_sampler(&scene, (width, height), 0.1, 3);
+        let batched = method1(&sampler, &region);
+        let centres = centres(&sampler, &region);
+        let mut tracer = Tracer::new(&scene.0);
+        let mut split = 0;
+        for y in 0..height {
+            for x in 0..width {
+                let centre = centres[y as usize][x as usize];
+                let pixel = batched[y as usize][x as usize];
+                if pixel == centre {
+                    continue;
+                }
+                split += 1;
+                let grid: Vec<Sample> = sampling::grid_positions(&sampler, x, y)
+                    .map(|(px, py)| sampler.trace(&mut tracer, px, py))
+                    .collect();
+                assert_eq!(grid.len(), 9);
+                assert_eq!(pixel, sampling::grid_mean(centre, &grid), "{x} {y}");
+            }
+        }
+        assert!(split > 20, "{split} pixels supersampled");
     }
 
     #[test]

@@ -140,11 +140,6 @@ impl Sampler<'_> {
             (x, y)
         }
     }
-
-    fn trace_jittered(&self, tracer: &mut Tracer<'_>, x: f64, y: f64, scale: f64) -> Sample {
-        let (x, y) = self.jittered(x, y, scale);
-        self.trace(tracer, x, y)
-    }
 }
 
 /// A sample and its colour prepared for the threshold test, computed once per sample.
@@ -176,26 +171,35 @@ fn mix(mut z: u64) -> u64 {
     z ^ (z >> 31)
 }
 
-/// Method 1: supersamples on a `depth` × `depth` grid, averaged with the centre sample.
-pub fn supersample_grid(
-    sampler: &Sampler<'_>,
-    tracer: &mut Tracer<'_>,
-    x: u32,
-    y: u32,
-    centre: Sample,
-) -> Sample {
+/// How many supersamples method 1 takes in a pixel: a `depth` × `depth` grid.
+pub fn grid_points(sampler: &Sampler<'_>) -> usize {
+    let n = sampler.depth.max(1) as usize;
+    n * n
+}
+
+/// Method 1's supersamples of the pixel at `(x, y)`: the jittered positions of its grid
+/// (see [`grid_points`]), row by row.
+pub fn grid_positions(sampler: &Sampler<'_>, x: u32, y: u32) -> impl Iterator<Item = (f64, f64)> {
     let n = sampler.depth.max(1);
     let step = 1.0 / f64::from(n);
     let scale = sampler.jitter / f64::from(n);
-    let mut sum = centre;
-    for j in 0..n {
-        for i in 0..n {
+    (0..n).flat_map(move |j| {
+        (0..n).map(move |i| {
             let px = f64::from(x) + (f64::from(i) + 0.5) * step;
             let py = f64::from(y) + (f64::from(j) + 0.5) * step;
-            sum = sum + sampler.trace_jittered(tracer, px, py, scale);
-        }
+            sampler.jittered(px, py, scale)
+        })
+    })
+}
+
+/// Method 1's pixel: the samples of its grid (see [`grid_positions`]) averaged with the
+/// centre sample.
+pub fn grid_mean(centre: Sample, grid: &[Sample]) -> Sample {
+    let mut sum = centre;
+    for &s in grid {
+        sum = sum + s;
     }
-    sum * (1.0 / f64::from(n * n + 1))
+    sum * (1.0 / (grid.len() + 1) as f64)
 }
 
 /// Method 1's test: whether a pixel differs from any of its four neighbours.
