@@ -190,9 +190,8 @@ impl Julia {
         // Cubes multiply the scale by 3 at each step; squares find 2^k when they need it,
         // from its bits, which saves the interpreter a multiplication at every step.
         let mut scale = 1.0;
-        let mut peak: f64 = 0.0;
-        // The norm of the last point checked: a bounded orbit's value, its peak, comes
-        // from the points before the last step, which its stretch leaves out.
+        // The norm of the last point checked, whose excess over the escape norm is the
+        // value, bounded or not.
         let mut norm = 1.0;
         for steps in 0..self.iterations {
             let a2 = a * a;
@@ -230,12 +229,6 @@ impl Julia {
                 let dist = ln_at_least_one(norm) / (product.sqrt() * scale * power);
                 return Orbit::escaped(value, dist, stretch);
             }
-            // The peak starts at zero and takes no NaN (no NaN is larger), so a plain
-            // comparison keeps it, without `max`'s test of the peak for NaN: a refinement
-            // runs its orbits to the end, and this is two of the step's instructions.
-            if !DISTANCE && norm > peak {
-                peak = norm;
-            }
             product *= norm;
             if power != 2.0 {
                 scale *= power;
@@ -256,7 +249,18 @@ impl Julia {
         } else {
             scale / power
         };
-        self.bounded::<DISTANCE>(peak, stretch(scale, product / norm, power))
+        // A point past the escape norm (that of 1 + |c|) squares or cubes to one further
+        // out than c can bring back, so a bounded orbit's points before the last stay
+        // clear of the escape norm, and the set's boundary is where the last norm checked
+        // reaches it: that norm less the escape norm is a value continuous across the
+        // boundary, as the escaping orbits' is. The march gets it for nothing, where the
+        // largest norm would cost a comparison at every step.
+        Orbit {
+            inside: true,
+            dist: self.min_step,
+            value: norm - self.exit,
+            stretch: stretch(scale, product / norm, power),
+        }
     }
 
     /// Hypercomplex iteration: the algebra splits into two complex planes,
@@ -302,9 +306,9 @@ impl Julia {
         self.bounded::<DISTANCE>(peak, f64::INFINITY)
     }
 
-    /// A bounded orbit whose largest squared norm was `peak`. A march, which asks for
-    /// distances, leaves the peak untracked: it costs a comparison every step, and only
-    /// the ends of a short bracket need it.
+    /// A bounded hypercomplex orbit whose largest squared norm was `peak`. A march, which
+    /// asks for distances, leaves the peak untracked: refining a hypercomplex crossing
+    /// halves, and asks for no value.
     fn bounded<const DISTANCE: bool>(&self, peak: f64, stretch: f64) -> Orbit {
         Orbit {
             inside: true,
@@ -423,9 +427,9 @@ impl Julia {
     /// inside end of the cell of the grid, the step halved down to the tolerance, that
     /// halving finds. Halving is what POV-Ray does, and where the boundary crosses the
     /// bracket many times (a fractal of many iterations) its choice shows. But once the
-    /// bracket is shorter than the distance over which the orbit's value (its peak norm
-    /// less the escape norm, which changes sign at the boundary) bends, the value is
-    /// nearly linear there and crosses once: interpolation then finds halving's cell in
+    /// bracket is shorter than the distance over which the orbit's value (the last norm it
+    /// checked less the escape norm, which changes sign at the boundary) bends, the value
+    /// is nearly linear there and crosses once: interpolation then finds halving's cell in
     /// two or three orbits where halving takes ten or more. Each trial is the grid point
     /// next to [`crossing_estimate`]'s crossing on the side away from the end the last
     /// trial moved, so that, the estimate being good, the next trial closes the bracket
@@ -447,8 +451,8 @@ impl Julia {
         }
         let (mut a, mut fa, mut sa) = (0, from.value, from.stretch);
         let (mut b, mut fb, mut sb) = (cells, to.value, to.stretch);
-        // The end the last trial replaced, with its value (NaN where it had none): a
-        // third point for the interpolation; and whether that end was `a`.
+        // The end the last trial replaced, with its value: a third point for the
+        // interpolation; and whether that end was `a`.
         let mut replaced: Option<(u64, f64)> = None;
         let mut moved_a = None;
         let (mut earlier, mut last) = (u64::MAX, u64::MAX);
@@ -457,17 +461,6 @@ impl Julia {
             let length = width as f64 * cell;
             let straight = length * length * max(sa, sb) < 1.0;
             let trial = if straight && width < earlier / 2 {
-                // An end the march left without its value gets it now.
-                let value_at = |at: u64| {
-                    self.orbit_on::<KIND, false>(line, start + at as f64 * cell)
-                        .value
-                };
-                if fa.is_nan() {
-                    fa = value_at(a);
-                }
-                if fb.is_nan() {
-                    fb = value_at(b);
-                }
                 let third = replaced.map(|(at, value)| (at as f64 - a as f64, value));
                 let x = crossing_estimate(width as f64, fa, fb, third);
                 let next = match moved_a {
@@ -697,8 +690,10 @@ struct Orbit {
     /// How far a march may step from the point; 0 where that is less than the
     /// shortest step, which the march takes instead.
     dist: f64,
-    /// The largest squared norm of the orbit less the escape norm: positive outside,
-    /// negative or zero inside, and continuous across the boundary; NaN where not taken.
+    /// The squared norm of the last point of the orbit checked less the escape norm:
+    /// positive outside, negative or zero inside, and continuous across the boundary.
+    /// For bounded hypercomplex orbits the largest squared norm is taken instead, and
+    /// NaN in a march, which does not track it.
     value: f64,
     /// The square of how far the last point of the orbit whose norm was checked (the
     /// escaping one, or a bounded orbit's point before its last step) moves per unit the
@@ -1076,17 +1071,17 @@ mod tests {
                 } else {
                     julia.orbit::<QUATERNION_SQUARE, false>(h)
                 };
-                let (mut q, mut peak) = (h, 0.0_f64);
+                let (mut q, mut last) = (h, 0.0);
                 let mut escaped = false;
                 for _ in 0..julia.iterations {
-                    peak = peak.max(q.length_squared());
-                    if q.length_squared() > julia.exit {
+                    last = q.length_squared();
+                    if last > julia.exit {
                         escaped = true;
                         break;
                     }
                     q = julia.step(q);
                 }
-                let want = if escaped { q.length_squared() } else { peak } - julia.exit;
+                let want = last - julia.exit;
                 assert_eq!(got.inside, !escaped, "{function:?} {h}");
                 assert!(
                     (got.value - want).abs() <= 1e-9 * (1.0 + want.abs()),
