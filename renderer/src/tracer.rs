@@ -175,6 +175,7 @@ pub struct Tracer<'w> {
     /// reflections meanwhile.
     behind: Vec<Behind<'w>>,
     parked_reflections: Vec<(DVec3, DVec3, f64)>,
+    mirrored_light: Vec<DVec3>,
 }
 
 impl<'w> Tracer<'w> {
@@ -201,6 +202,7 @@ impl<'w> Tracer<'w> {
             primary_hits: Vec::new(),
             behind: Vec::new(),
             parked_reflections: Vec::new(),
+            mirrored_light: Vec::new(),
         }
     }
 
@@ -229,8 +231,8 @@ impl<'w> Tracer<'w> {
     /// The samples camera rays bring back, appended to `out` in order (a missing ray, one
     /// the camera has none for, brings [`Sample::NO_RAY`]): each as [`Self::trace_primary`]
     /// gives it, but step by step for all of them: the nearest hits; the surfaces' shading,
-    /// but for the light from behind transparent ones (see [`Self::shade_deferring`]); the
-    /// rays through those; and what their layers make of that light. The interpreted plugin
+    /// but for their refracted and reflected rays (see [`Self::shade_deferring`]); the
+    /// refracted rays; the reflected ones; and what the layers make of their light. The interpreted plugin
     /// runs much faster so: its host's branch predictors learn the interpreter's jumps for a
     /// stretch of code run again and again, but not for a sample's whole path, which is
     /// too long to hold (see docs/plugin-speed.md). Inside Typst, julia.pov took 1.21 s
@@ -285,17 +287,37 @@ impl<'w> Tracer<'w> {
             };
             out.push(self.past_media(ray, hit.as_ref(), sample));
         }
+        let camera_interiors = || world.camera_interiors.iter().map(|i| &**i);
         for later in &mut behind {
-            self.inside
-                .start_in(world.camera_interiors.iter().map(|i| &**i));
+            let Some((through, weight)) = later.through else {
+                continue;
+            };
+            self.inside.start_in(camera_interiors());
             let leaf: &'w Leaf = later.hit.leaf;
             self.inside.cross(&leaf.interior);
-            later.light =
-                self.trace_leaving(leaf, &later.through, RayKind::Transmitted, 2, later.weight);
+            let light = self.trace_leaving(leaf, &through, RayKind::Transmitted, 2, weight);
+            later.light_behind = Some((light, false));
+        }
+        // Then the reflected rays of all of them, in the order their layers come.
+        let mut mirrored_light = std::mem::take(&mut self.mirrored_light);
+        mirrored_light.clear();
+        for later in &mut behind {
+            self.inside.start_in(camera_interiors());
+            let (from, count) = later.parked;
+            let total_reflection = later.light_behind.is_some_and(|(_, tir)| tir);
+            let first = mirrored_light.len();
+            for &entry in &parked[from..from + count] {
+                let (ray, p, top_normal) = (&later.ray, later.p, later.lit.top_normal);
+                if let Some((mirror, weight)) =
+                    self.mirror_ray(entry, ray, p, top_normal, total_reflection, 1.0)
+                {
+                    mirrored_light.push(self.reflect(later.hit.leaf, &mirror, 1, weight));
+                }
+            }
+            later.mirrored = (first, mirrored_light.len() - first);
         }
         for later in &behind {
-            self.inside
-                .start_in(world.camera_interiors.iter().map(|i| &**i));
+            self.inside.start_in(camera_interiors());
             let first = self.reflections.len();
             let (from, count) = later.parked;
             self.reflections
@@ -304,6 +326,7 @@ impl<'w> Tracer<'w> {
                 reflections: first,
                 ..later.lit
             };
+            let (from, count) = later.mirrored;
             let s = self.finish_layers(
                 &later.ray,
                 later.p,
@@ -311,12 +334,14 @@ impl<'w> Tracer<'w> {
                 1,
                 1.0,
                 &lit,
-                Some((later.light, false)),
+                later.light_behind,
+                &mirrored_light[from..from + count],
             );
             // As [`Self::shade_layered`] adds up its one stack.
             let sample = Sample::default() + s * 1.0;
             out[later.index] = self.past_media(&later.ray, Some(&later.hit), sample);
         }
+        self.mirrored_light = mirrored_light;
         self.behind = behind;
         self.parked_reflections = parked;
         self.primary_hits = hits;
@@ -397,11 +422,12 @@ impl<'w> Tracer<'w> {
     }
 
     /// [`Self::shade`] for a camera ray's `hit`; or `None` where the surface is one stack
-    /// of layers that lets light through from behind along a refracted ray, having done
-    /// all but that light: what is left joins `behind`, with the ray to trace for that
-    /// light, the layers' own light, and their reflections parked on `parked`, for the
-    /// sample at `index` of the batch. Not with media, radiosity or subsurface light, whose
-    /// results depend on the order rays are traced in, nor with dispersion.
+    /// of layers that lets light through from behind along a refracted ray, or reflects,
+    /// having done all but tracing those rays: what is left joins `behind`, with the
+    /// refracted ray, the layers' own light, and their reflections parked on `parked`, for
+    /// the sample at `index` of the batch. Not with media, radiosity or subsurface light,
+    /// whose results depend on the order rays are traced in; dispersed and totally
+    /// reflected light is traced at once.
     fn shade_deferring(
         &mut self,
         ray: &Ray,
@@ -450,29 +476,31 @@ impl<'w> Tracer<'w> {
                     .start_in(world.camera_interiors.iter().map(|i| &**i));
                 direction.map(|d| (Ray::new(at.world, d), w))
             });
-        let shaded = match through {
-            Some((through, weight)) => {
-                let first = parked.len();
-                parked.extend(self.reflections.drain(lit.reflections..));
-                behind.push(Behind {
-                    index,
-                    hit: *hit,
-                    ray: *ray,
-                    p: at.world,
-                    lit,
-                    through,
-                    weight,
-                    parked: (first, parked.len() - first),
-                    light: Sample::default(),
-                });
-                None
-            }
-            None => {
-                let behind =
-                    weight.map(|w| self.transmitted(ray, at.world, lit.top_normal, leaf, 1, w));
-                let s = self.finish_layers(ray, at.world, hit, 1, 1.0, &lit, behind);
-                Some(Sample::default() + s * 1.0)
-            }
+        // The light from behind at once where it takes no refracted ray (none, too weak,
+        // dispersed or totally reflected); the surface waits for its rays otherwise, or
+        // where its layers reflect.
+        let light_behind = match through {
+            Some(_) => None,
+            None => weight.map(|w| self.transmitted(ray, at.world, lit.top_normal, leaf, 1, w)),
+        };
+        let shaded = if through.is_some() || self.reflections.len() > lit.reflections {
+            let first = parked.len();
+            parked.extend(self.reflections.drain(lit.reflections..));
+            behind.push(Behind {
+                index,
+                hit: *hit,
+                ray: *ray,
+                p: at.world,
+                lit,
+                through,
+                light_behind,
+                parked: (first, parked.len() - first),
+                mirrored: (0, 0),
+            });
+            None
+        } else {
+            let s = self.finish_layers(ray, at.world, hit, 1, 1.0, &lit, light_behind, &[]);
+            Some(Sample::default() + s * 1.0)
         };
         self.arrivals.truncate(arrivals);
         shaded
@@ -585,7 +613,7 @@ impl<'w> Tracer<'w> {
         let behind = self
             .weight_behind(&lit, weight)
             .map(|weight| self.transmitted(ray, at.world, lit.top_normal, hit.leaf, level, weight));
-        self.finish_layers(ray, at.world, hit, level, weight, &lit, behind)
+        self.finish_layers(ray, at.world, hit, level, weight, &lit, behind, &[])
     }
 
     /// The first step of [`Self::shade_layers`]: each layer's own light, what the layers
@@ -731,6 +759,7 @@ impl<'w> Tracer<'w> {
         weight: f64,
         lit: &LayersLit,
         behind: Option<(Sample, bool)>,
+        mirrored_light: &[DVec3],
     ) -> Sample {
         let world = self.world;
         let leaf: &'w Leaf = hit.leaf;
@@ -755,18 +784,19 @@ impl<'w> Tracer<'w> {
         }
 
         if world.quality.secondary_rays {
+            let mut traced = mirrored_light.iter();
             for index in reflections..self.reflections.len() {
-                let (reflectivity, normal, exponent) = self.reflections[index];
-                // Total internal reflection has already reflected along the top normal.
-                let same_as_top = (normal - top_normal).abs().max_element() <= 1e-10;
-                if reflectivity == DVec3::ZERO || (total_reflection && same_as_top) {
+                let entry = self.reflections[index];
+                let Some((mirror, new_weight)) =
+                    self.mirror_ray(entry, ray, p, top_normal, total_reflection, weight)
+                else {
                     continue;
-                }
-                let new_weight = weight * reflectivity.max_element();
-                if new_weight <= world.adc_bailout {
-                    continue;
-                }
-                let reflected = self.reflect(leaf, &mirrored(ray, p, normal), level, new_weight);
+                };
+                let reflected = match traced.next() {
+                    Some(&light) => light,
+                    None => self.reflect(leaf, &mirror, level, new_weight),
+                };
+                let (reflectivity, _, exponent) = entry;
                 let reflected = if exponent != 1.0 && exponent > 0.0 {
                     reflected.max(DVec3::ZERO).powf(1.0 / exponent)
                 } else {
@@ -777,6 +807,27 @@ impl<'w> Tracer<'w> {
         }
         self.reflections.truncate(reflections);
         Sample::new(colour, transmit)
+    }
+
+    /// The mirrored ray of a layer's reflection (`entry`, from [`Self::reflections`]) at
+    /// `p`, where `ray` met the surface, and its weight; `None` where none is traced: the
+    /// layer reflects nothing, the light is too weak, or total internal reflection
+    /// (`total_reflection`) has already reflected along the top normal.
+    fn mirror_ray(
+        &self,
+        (reflectivity, normal, _): (DVec3, DVec3, f64),
+        ray: &Ray,
+        p: DVec3,
+        top_normal: DVec3,
+        total_reflection: bool,
+        weight: f64,
+    ) -> Option<(Ray, f64)> {
+        let same_as_top = (normal - top_normal).abs().max_element() <= 1e-10;
+        if reflectivity == DVec3::ZERO || (total_reflection && same_as_top) {
+            return None;
+        }
+        let new_weight = weight * reflectivity.max_element();
+        (new_weight > self.world.adc_bailout).then(|| (mirrored(ray, p, normal), new_weight))
     }
 
     /// The photons lighting the point `p` of `leaf`, whose normal `normal` faces the
@@ -1343,7 +1394,7 @@ impl<'w> Tracer<'w> {
     }
 }
 
-/// A camera ray's surface whose light from behind is still to be traced (see
+/// A camera ray's surface whose refracted or reflected rays are still to be traced (see
 /// [`Tracer::trace_primaries`]).
 #[derive(Clone, Copy)]
 struct Behind<'w> {
@@ -1353,13 +1404,15 @@ struct Behind<'w> {
     ray: Ray,
     p: DVec3,
     lit: LayersLit,
-    /// The refracted ray through the surface, and its weight.
-    through: Ray,
-    weight: f64,
+    /// The refracted ray through the surface still to be traced, and its weight.
+    through: Option<(Ray, f64)>,
+    /// The light from behind the surface, and whether it was totally reflected: found at
+    /// once, or along `through` once traced.
+    light_behind: Option<(Sample, bool)>,
     /// The layers' reflections: from where on the parked list, and how many.
     parked: (usize, usize),
-    /// The light along `through`, once traced.
-    light: Sample,
+    /// The light their mirrored rays bring: from where on the list of it, and how many.
+    mirrored: (usize, usize),
 }
 
 /// What the layers of a stack show at a point before the light from behind the surface
@@ -1691,9 +1744,10 @@ mod tests {
     }
 
     /// Camera rays traced as a batch bring back what each brings traced alone, to the bit:
-    /// through glass (whose refracted rays a batch traces after all its surfaces are lit),
-    /// bumpy, layered and dispersing glass, mirrors, from inside water (total internal
-    /// reflection), inside a fogged atmosphere, and where the camera has no ray.
+    /// through glass and off mirrors (whose refracted and reflected rays a batch traces
+    /// after all its surfaces are lit), bumpy, layered and dispersing glass, a reflective
+    /// floor, from inside water (total internal reflection), inside a fogged atmosphere,
+    /// and where the camera has no ray.
     #[test]
     fn camera_rays_in_a_batch_shade_as_alone() {
         let scenes = [
@@ -1713,7 +1767,10 @@ mod tests {
               interior { ior 1.3 } }
             box { <-0.5, -1, 1.5>, <0.5, 0.5, 2> pigment { rgbf 0.9 }
               interior { ior 1.5 dispersion 1.1 dispersion_samples 5 } }
-            plane { y, -1 pigment { checker rgb 0.9 rgb <0.3, 0.4, 0.5> } }",
+            sphere { <0, -0.5, -1.5>, 0.5 pigment { rgb 0.1 }
+              finish { reflection { 0.2, 0.9 falloff 2 exponent 0.8 metallic } } }
+            plane { y, -1 pigment { checker rgb 0.9 rgb <0.3, 0.4, 0.5> }
+              finish { reflection 0.3 } }",
             "camera { location <0, 0, 0> look_at <0, -1, 2> angle 120 }
             light_source { <4, 6, -6> color rgb 1.2 }
             sphere { 0, 3 pigment { rgbf <0.8, 0.9, 1, 0.95> } interior { ior 1.33 } hollow }
