@@ -171,8 +171,8 @@ pub struct Tracer<'w> {
     profiles: subsurface::ProfileCache,
     /// The nearest hits of a batch of camera rays (see [`Self::trace_primaries`]).
     primary_hits: Vec<Option<Hit<'w>>>,
-    /// The batch's surfaces waiting for the light from behind them, and their layers'
-    /// reflections meanwhile.
+    /// The batch's surfaces waiting for their refracted and reflected rays, their layers'
+    /// reflections meanwhile, and the light the reflected rays bring.
     behind: Vec<Behind<'w>>,
     parked_reflections: Vec<(DVec3, DVec3, f64)>,
     mirrored_light: Vec<DVec3>,
@@ -222,20 +222,25 @@ impl<'w> Tracer<'w> {
 
     /// The sample a camera ray brings back.
     pub fn trace_primary(&mut self, ray: &Ray) -> Sample {
+        self.start_at_camera();
+        self.trace(ray, RayKind::Primary, 1, 1.0)
+    }
+
+    /// Puts the current ray inside the interiors the camera is in, as a camera ray starts.
+    fn start_at_camera(&mut self) {
         let world = self.world;
         self.inside
             .start_in(world.camera_interiors.iter().map(|i| &**i));
-        self.trace(ray, RayKind::Primary, 1, 1.0)
     }
 
     /// The samples camera rays bring back, appended to `out` in order (a missing ray, one
     /// the camera has none for, brings [`Sample::NO_RAY`]): each as [`Self::trace_primary`]
     /// gives it, but step by step for all of them: the nearest hits; the surfaces' shading,
     /// but for their refracted and reflected rays (see [`Self::shade_deferring`]); the
-    /// refracted rays; the reflected ones; and what the layers make of their light. The interpreted plugin
-    /// runs much faster so: its host's branch predictors learn the interpreter's jumps for a
-    /// stretch of code run again and again, but not for a sample's whole path, which is
-    /// too long to hold (see docs/plugin-speed.md). Inside Typst, julia.pov took 1.21 s
+    /// refracted rays; the reflected ones; and what the layers make of their light. The
+    /// interpreted plugin runs much faster so: its host's branch predictors learn the
+    /// interpreter's jumps for a stretch of code run again and again, but not for a
+    /// sample's whole path, which is too long to hold (see docs/plugin-speed.md). Inside Typst, julia.pov took 1.21 s
     /// with each ray traced whole and 0.97 s with the hits first; caustic.pov took 4.80 s
     /// with the hits first and 3.94 s with the rays through the water after the rest.
     pub fn trace_primaries(&mut self, rays: &[Option<Ray>], out: &mut Vec<Sample>) {
@@ -249,18 +254,12 @@ impl<'w> Tracer<'w> {
         }
         let mut hits = std::mem::take(&mut self.primary_hits);
         hits.clear();
-        hits.extend(rays.iter().map(|ray| {
-            let ray = ray.as_ref()?;
-            let q = Query::new(
-                *ray,
-                RayKind::Primary,
-                self.tolerance(ray.origin),
-                f64::INFINITY,
-            );
-            world.bvh.nearest(&q, &mut self.scratch)
-        }));
-        // The surfaces' shading, but for the light from behind transparent ones, which is
-        // traced next for all of them, and then passes their layers.
+        hits.extend(
+            rays.iter()
+                .map(|ray| self.first_hit(ray.as_ref()?, RayKind::Primary)),
+        );
+        // The surfaces' shading, but for their refracted and reflected rays, which are
+        // traced next for all of them.
         let mut behind = std::mem::take(&mut self.behind);
         let mut parked = std::mem::take(&mut self.parked_reflections);
         behind.clear();
@@ -270,8 +269,7 @@ impl<'w> Tracer<'w> {
                 out.push(Sample::NO_RAY);
                 continue;
             };
-            self.inside
-                .start_in(world.camera_interiors.iter().map(|i| &**i));
+            self.start_at_camera();
             let sample = match hit {
                 None => self.missed(ray, RayKind::Primary),
                 Some(hit) => {
@@ -287,12 +285,11 @@ impl<'w> Tracer<'w> {
             };
             out.push(self.past_media(ray, hit.as_ref(), sample));
         }
-        let camera_interiors = || world.camera_interiors.iter().map(|i| &**i);
         for later in &mut behind {
             let Some((through, weight)) = later.through else {
                 continue;
             };
-            self.inside.start_in(camera_interiors());
+            self.start_at_camera();
             let leaf: &'w Leaf = later.hit.leaf;
             self.inside.cross(&leaf.interior);
             let light = self.trace_leaving(leaf, &through, RayKind::Transmitted, 2, weight);
@@ -302,7 +299,7 @@ impl<'w> Tracer<'w> {
         let mut mirrored_light = std::mem::take(&mut self.mirrored_light);
         mirrored_light.clear();
         for later in &mut behind {
-            self.inside.start_in(camera_interiors());
+            self.start_at_camera();
             let (from, count) = later.parked;
             let total_reflection = later.light_behind.is_some_and(|(_, tir)| tir);
             let first = mirrored_light.len();
@@ -317,7 +314,7 @@ impl<'w> Tracer<'w> {
             later.mirrored = (first, mirrored_light.len() - first);
         }
         for later in &behind {
-            self.inside.start_in(camera_interiors());
+            self.start_at_camera();
             let first = self.reflections.len();
             let (from, count) = later.parked;
             self.reflections
@@ -351,8 +348,7 @@ impl<'w> Tracer<'w> {
         if level > self.world.max_trace_level {
             return Sample::default();
         }
-        let q = Query::new(*ray, kind, self.tolerance(ray.origin), f64::INFINITY);
-        let hit = self.world.bvh.nearest(&q, &mut self.scratch);
+        let hit = self.first_hit(ray, kind);
         self.finish_trace(ray, kind, level, weight, hit.as_ref())
     }
 
@@ -397,10 +393,7 @@ impl<'w> Tracer<'w> {
             && let Some(layer) = leaf.opaque_layer()
             && self.shades_plainly()
         {
-            let mut normal = leaf.normal(p, hit.part);
-            if normal.dot(ray.direction) > 0.0 {
-                normal = -normal;
-            }
+            let normal = facing_normal(leaf, p, hit.part, ray);
             let pigment = match &layer.pigment {
                 // The same everywhere: no texture point to find.
                 Pigment::Solid(colour) => *colour,
@@ -453,10 +446,7 @@ impl<'w> Tracer<'w> {
         // As `shade_layered` does for its one stack.
         let p = ray.at(hit.t);
         let at = leaf.texture_point(p, hit.part, ray);
-        let mut normal = leaf.normal(p, hit.part);
-        if normal.dot(ray.direction) > 0.0 {
-            normal = -normal;
-        }
+        let normal = facing_normal(leaf, p, hit.part, ray);
         let arrivals = self.arrivals.len();
         self.arrivals.resize(arrivals + world.lights.len(), None);
         let stack = Stack {
@@ -472,8 +462,7 @@ impl<'w> Tracer<'w> {
             .and_then(|w| {
                 let ior = self.inside.cross(&leaf.interior);
                 let direction = refraction::refract(ray.direction, lit.top_normal, ior);
-                self.inside
-                    .start_in(world.camera_interiors.iter().map(|i| &**i));
+                self.start_at_camera();
                 direction.map(|d| (Ray::new(at.world, d), w))
             });
         // The light from behind at once where it takes no refracted ray (none, too weak,
@@ -524,11 +513,7 @@ impl<'w> Tracer<'w> {
             });
             return total;
         }
-        let mut normal = leaf.normal(p, hit.part);
-        // POV-Ray lights the side the ray sees.
-        if normal.dot(ray.direction) > 0.0 {
-            normal = -normal;
-        }
+        let normal = facing_normal(leaf, p, hit.part, ray);
         let arrivals = self.arrivals.len();
         self.arrivals
             .resize(arrivals + self.world.lights.len(), None);
@@ -1467,6 +1452,16 @@ struct Lit {
 
 /// Whether light sources can show on a surface with this finish at all: through diffuse
 /// (front or back) or a highlight; `Tracer::lit` gives nothing otherwise.
+/// The normal of `leaf` at `p` turned to face `ray`: POV-Ray lights the side the ray sees.
+fn facing_normal(leaf: &Leaf, p: DVec3, part: u32, ray: &Ray) -> DVec3 {
+    let normal = leaf.normal(p, part);
+    if normal.dot(ray.direction) > 0.0 {
+        -normal
+    } else {
+        normal
+    }
+}
+
 fn shows_light(finish: &Finish) -> bool {
     finish.diffuse > 0.0 || finish.diffuse_back > 0.0 || finish.phong > 0.0 || finish.specular > 0.0
 }
